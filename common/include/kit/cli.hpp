@@ -1,0 +1,96 @@
+#pragma once
+// Command-line conventions shared by every chapter binary (CLI11):
+//  - physical parameters are flags with SI units in their help and a stated allowed range;
+//  - bad input is a usage error: the message names the flag, the value and the range, the
+//    exit code is 2 and nothing is written;
+//  - --json prints one summary object on stdout and nothing else.
+#include <functional>
+#include <limits>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <kit/figure.hpp>
+
+namespace kit {
+
+namespace exit_code {
+inline constexpr int ok = 0;
+inline constexpr int failure = 1;    ///< a solver or I/O failure
+inline constexpr int usage = 2;      ///< bad flag, value or scene
+inline constexpr int diverged = 3;   ///< only with --fail-on-divergence
+}  // namespace exit_code
+
+/// Bad input found after parsing (a combination of flags, a scene key): exit code 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// An interval of allowed real values. NaN and ±Inf are never allowed.
+struct RealRange {
+  double lo = -std::numeric_limits<double>::max();
+  double hi = std::numeric_limits<double>::max();
+  bool lo_open = false;
+  bool hi_open = false;
+  bool nonzero = false;  ///< additionally exclude 0
+
+  bool contains(double value) const;
+  /// "a finite number in (0, 10]", "any finite number", "a finite non-zero number".
+  std::string describe() const;
+};
+RealRange any_finite();
+RealRange nonzero_finite();
+RealRange positive(double hi = std::numeric_limits<double>::max());      ///< (0, hi]
+RealRange between(double lo, double hi);                                 ///< [lo, hi]
+
+/// The flags every chapter shares.
+struct CommonOptions {
+  std::string out_dir;                             ///< --out: where figures go
+  std::vector<std::string> formats{"pdf", "png"};  ///< --format
+  bool no_plot = false;                            ///< --no-plot: compute and print only
+  bool show = false;                               ///< --show: open a window if a display exists
+  bool json = false;                               ///< --json: one JSON object on stdout
+  bool quiet = false;                              ///< --quiet: no text on stdout
+};
+
+/// One chapter binary: its flags, its text and JSON report, and its figures.
+class ChapterApp {
+ public:
+  ChapterApp(std::string chapter, std::string default_out_dir, std::string description);
+
+  /// A real-valued flag stored into `value` (whose initial value is the default). `help`
+  /// names the quantity and its SI unit; `range` is enforced at parse time.
+  void add_real(const std::string& flag, double& value, const std::string& help, RealRange range);
+  /// A whole-number flag in [lo, hi].
+  void add_count(const std::string& flag, long& value, const std::string& help, long lo, long hi);
+  CLI::App& cli() { return app_; }
+
+  /// Parses the flags and runs `body`. Returns the exit code: 0 after --help or success,
+  /// 2 on a usage error (message on stderr, nothing written), 1 on another failure.
+  int run(int argc, const char* const* argv, const std::function<void()>& body);
+
+  const CommonOptions& options() const { return options_; }
+  /// Human-readable output: stdout, or nowhere under --json or --quiet.
+  std::ostream& text();
+  /// The summary printed by --json. "chapter" and "parameters" are filled in already.
+  nlohmann::json& summary() { return summary_; }
+  /// Writes a figure under --out (data and script always; renders unless --no-plot) and
+  /// lists its files in the summary.
+  void figure(const Figure& figure);
+
+ private:
+  std::string chapter_;
+  CLI::App app_;
+  CommonOptions options_;
+  nlohmann::json summary_;
+  std::vector<std::function<void()>> record_parameters_;
+  std::ostream null_{nullptr};
+};
+
+}  // namespace kit

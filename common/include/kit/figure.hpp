@@ -1,0 +1,84 @@
+#pragma once
+// Figures: for each one, the data (name.dat), the gnuplot script that draws it (name.gp,
+// restylable without rerunning anything) and its renders (PDF for slides, PNG, SVG on request).
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kit {
+
+/// One curve or point set, stored as one data block (gnuplot `index`) of name.dat.
+struct Series {
+  std::string title;            ///< legend entry; empty means no entry. gnuplot's enhanced
+                                ///< text applies: x_0 subscript, t^2 superscript, no bare ~
+  std::vector<double> x, y;     ///< same length
+  std::string with = "lines";   ///< gnuplot style: lines, points, linespoints, impulses…
+  std::string style;            ///< extra gnuplot options, e.g. "lw 2 dt 2 lc rgb '#d62728'"
+};
+
+/// One set of axes.
+struct Panel {
+  std::string title;
+  std::string xlabel;           ///< quantity and unit, e.g. "time t [s]"
+  std::string ylabel;
+  bool logx = false;
+  bool logy = false;
+  std::string key = "top right";  ///< gnuplot `set key` placement
+  std::vector<Series> series;
+  std::vector<std::string> commands;  ///< extra gnuplot commands: ranges, labels, arrows
+  /// Where the panel sits, as fractions of the canvas (x, y, width, height); unset = stacked.
+  std::optional<std::array<double, 4>> place;
+
+  Series& add(Series s);
+  Series& line(std::string title, std::vector<double> x, std::vector<double> y, std::string style = "");
+  Series& points(std::string title, std::vector<double> x, std::vector<double> y, std::string style = "");
+};
+
+struct Figure {
+  std::string name;   ///< file stem: name.dat, name.gp, name.pdf, name.png, name.svg
+  std::string title;  ///< shown above all panels
+  double width_in = 7.0;
+  double height_in = 4.5;
+  /// Plot-area edges as canvas fractions, the same for every panel so stacked axes line up
+  /// (a legend "outside right" goes beyond right_edge). Unset: gnuplot chooses.
+  std::optional<double> left_edge, right_edge;
+  std::vector<Panel> panels;
+
+  Figure(std::string name, std::string title) : name(std::move(name)), title(std::move(title)) {}
+  Panel& panel(std::string xlabel, std::string ylabel, std::string panel_title = "");
+};
+
+/// Colours shared by every chapter, so a method looks the same everywhere. Callers add marks
+/// and widths ("pt 7 ps 0.8", "lw 3"); the default line width is 1.5.
+namespace look {
+inline const std::string exact = "lc rgb '#000000' lw 2";
+inline const std::string explicit_euler = "lc rgb '#d62728'";
+inline const std::string implicit_euler = "lc rgb '#1f77b4'";
+inline const std::string reference = "lc rgb '#2ca02c'";
+inline const std::string prediction = "lc rgb '#555555' dt 2";
+inline const std::string single_precision = "lc rgb '#9467bd'";
+inline const std::string highlight = "lc rgb '#000000'";
+}  // namespace look
+
+struct FigureOptions {
+  std::filesystem::path dir;                     ///< created when missing
+  std::vector<std::string> formats{"pdf", "png"};  ///< any of pdf, png, svg
+  bool render = true;                            ///< false: data and script only
+  bool show = false;                             ///< also open an interactive window
+};
+
+struct FigureFiles {
+  std::vector<std::filesystem::path> files;  ///< everything written, data and script first
+  std::vector<std::string> notes;            ///< gnuplot warnings, or why --show did nothing
+};
+
+/// Writes name.dat and name.gp into options.dir, then each render, every file through a
+/// temporary name. Throws std::runtime_error when gnuplot cannot produce a render.
+FigureFiles write_figure(const Figure& figure, const FigureOptions& options);
+
+/// The gnuplot script for `figure` reading `data_file` (exposed for tests).
+std::string gnuplot_script(const Figure& figure, const std::string& data_file);
+
+}  // namespace kit

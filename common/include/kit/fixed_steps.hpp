@@ -1,0 +1,38 @@
+#pragma once
+// Driving a one-step method at a constant Δt: u_{k+1} = step(u_k).
+#include <cmath>
+
+#include <kit/state.hpp>
+
+namespace kit {
+
+/// u_n after n applications of `step` to u0. No storage: this is what sweeps over millions
+/// of steps use.
+template <class State, class Step>
+State advance(State u, long n, Step&& step) {
+  for (long k = 0; k < n; ++k) u = step(u);
+  return u;
+}
+
+/// The whole trajectory (t_k = kΔt, u_k) for k = 0..n.
+template <class State, class Step>
+Trajectory<State> record(State u, double dt, long n, Step&& step) {
+  Trajectory<State> trajectory;
+  trajectory.t.reserve(static_cast<std::size_t>(n) + 1);
+  trajectory.u.reserve(static_cast<std::size_t>(n) + 1);
+  trajectory.push(0.0, u);
+  for (long k = 1; k <= n; ++k) {
+    u = step(u);
+    trajectory.push(static_cast<double>(k) * dt, u);
+  }
+  return trajectory;
+}
+
+/// Number of steps of Δt that tile [0, T], or 0 when T/Δt is not a whole number (to 1e-9).
+inline long whole_steps(double t_end, double dt) {
+  const double ratio = t_end / dt;
+  const double n = std::round(ratio);
+  return (n >= 1 && std::abs(ratio - n) <= 1e-9 * n) ? static_cast<long>(n) : 0;
+}
+
+}  // namespace kit

@@ -1,0 +1,147 @@
+#include <kit/cli.hpp>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include <kit/reference_solver.hpp>
+
+namespace kit {
+
+bool RealRange::contains(double v) const {
+  if (!std::isfinite(v)) return false;
+  if (nonzero && v == 0.0) return false;
+  if (lo_open ? !(v > lo) : !(v >= lo)) return false;
+  if (hi_open ? !(v < hi) : !(v <= hi)) return false;
+  return true;
+}
+
+std::string RealRange::describe() const {
+  constexpr double big = std::numeric_limits<double>::max();
+  const bool has_lo = lo > -big, has_hi = hi < big;
+  std::string what = nonzero ? "a finite non-zero number" : "a finite number";
+  if (!has_lo && !has_hi) return nonzero ? what : "any finite number";
+  if (has_lo && !has_hi) return fmt::format("{} {} {}", what, lo_open ? ">" : ">=", lo);
+  if (!has_lo && has_hi) return fmt::format("{} {} {}", what, hi_open ? "<" : "<=", hi);
+  return fmt::format("{} in {}{}, {}{}", what, lo_open ? "(" : "[", lo, hi, hi_open ? ")" : "]");
+}
+
+RealRange any_finite() { return {}; }
+RealRange nonzero_finite() {
+  RealRange r;
+  r.nonzero = true;
+  return r;
+}
+RealRange positive(double hi) {
+  RealRange r;
+  r.lo = 0.0;
+  r.lo_open = true;
+  r.hi = hi;
+  return r;
+}
+RealRange between(double lo, double hi) {
+  RealRange r;
+  r.lo = lo;
+  r.hi = hi;
+  return r;
+}
+
+ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::string description)
+    : chapter_(std::move(chapter)), app_(std::move(description), chapter_) {
+  options_.out_dir = std::move(default_out_dir);
+  app_.option_defaults()->always_capture_default();
+  app_.get_formatter()->column_width(34);
+  app_.add_option("--out", options_.out_dir, "folder for the figures (data, gnuplot script, renders)")
+      ->type_name("DIR");
+  app_.add_option("--format", options_.formats, "renders to write, comma-separated: pdf, png, svg")
+      ->delimiter(',')
+      ->type_name("LIST")
+      ->check(CLI::IsMember({"pdf", "png", "svg"}));
+  app_.add_flag("--no-plot", options_.no_plot, "write no figure files at all");
+  app_.add_flag("--show", options_.show, "also open each figure in a window when a display exists");
+  app_.add_flag("--json", options_.json, "print one JSON summary object on stdout, and nothing else");
+  app_.add_flag("--quiet", options_.quiet, "print nothing on stdout");
+  summary_["chapter"] = chapter_;
+}
+
+void ChapterApp::add_real(const std::string& flag, double& value, const std::string& help, RealRange range) {
+  auto check = [flag, range](std::string& input) -> std::string {
+    errno = 0;
+    char* end = nullptr;
+    const double v = std::strtod(input.c_str(), &end);
+    if (end == input.c_str() || *end != '\0')
+      return fmt::format("'{}' is not a number; expected {}", input, range.describe());
+    if (errno == ERANGE || !range.contains(v))
+      return fmt::format("value {} is out of range; expected {}", input, range.describe());
+    return {};
+  };
+  app_.add_option(flag, value, fmt::format("{}; {}", help, range.describe()))
+      ->check(CLI::Validator(check, "", ""))
+      ->type_name("REAL");
+  const std::string key = flag.substr(flag.find_first_not_of('-'));
+  record_parameters_.push_back([this, key, &value] { summary_["parameters"][key] = value; });
+}
+
+void ChapterApp::add_count(const std::string& flag, long& value, const std::string& help, long lo, long hi) {
+  auto check = [lo, hi](std::string& input) -> std::string {
+    errno = 0;
+    char* end = nullptr;
+    const long v = std::strtol(input.c_str(), &end, 10);
+    if (end == input.c_str() || *end != '\0' || errno == ERANGE || v < lo || v > hi)
+      return fmt::format("value {} is out of range; expected a whole number in [{}, {}]", input, lo, hi);
+    return {};
+  };
+  app_.add_option(flag, value, fmt::format("{}; a whole number in [{}, {}]", help, lo, hi))
+      ->check(CLI::Validator(check, "", ""))
+      ->type_name("N");
+  const std::string key = flag.substr(flag.find_first_not_of('-'));
+  record_parameters_.push_back([this, key, &value] { summary_["parameters"][key] = value; });
+}
+
+std::ostream& ChapterApp::text() {
+  return (options_.json || options_.quiet) ? null_ : std::cout;
+}
+
+void ChapterApp::figure(const Figure& fig) {
+  if (options_.no_plot) return;
+  FigureOptions figure_options;
+  figure_options.dir = options_.out_dir;
+  figure_options.formats = options_.formats;
+  figure_options.show = options_.show;
+  const FigureFiles files = write_figure(fig, figure_options);
+  for (const auto& file : files.files) summary_["figures"][fig.name].push_back(file.string());
+  for (const auto& note : files.notes) std::cerr << chapter_ << ": " << note << "\n";
+}
+
+int ChapterApp::run(int argc, const char* const* argv, const std::function<void()>& body) {
+  try {
+    app_.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app_.exit(e);  // --help
+    std::cerr << chapter_ << ": error: " << e.what() << "\nRun '" << chapter_
+              << " --help' to see every flag, its unit and its allowed range.\n";
+    return exit_code::usage;
+  }
+  for (const auto& record : record_parameters_) record();
+  try {
+    body();
+  } catch (const UsageError& e) {
+    std::cerr << chapter_ << ": error: " << e.what() << "\n";
+    return exit_code::usage;
+  } catch (const std::exception& e) {
+    std::cerr << chapter_ << ": failed: " << e.what() << "\n";
+    return exit_code::failure;
+  }
+  if (options_.json) {
+    std::cout << summary_.dump(2) << "\n";
+  } else if (!options_.quiet && !options_.no_plot) {
+    std::cout << "\nFigures (data, gnuplot script, renders) are in " << options_.out_dir << "\n";
+  }
+  return exit_code::ok;
+}
+
+}  // namespace kit

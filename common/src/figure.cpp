@@ -1,0 +1,198 @@
+#include <kit/figure.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <gnuplot-iostream.h>
+
+#include <kit/atomic_file.hpp>
+
+namespace kit {
+
+Series& Panel::add(Series s) {
+  if (s.x.size() != s.y.size())
+    throw std::invalid_argument(fmt::format("series '{}' has {} x and {} y values", s.title,
+                                            s.x.size(), s.y.size()));
+  series.push_back(std::move(s));
+  return series.back();
+}
+
+Series& Panel::line(std::string title, std::vector<double> x, std::vector<double> y, std::string style) {
+  return add({std::move(title), std::move(x), std::move(y), "lines", std::move(style)});
+}
+
+Series& Panel::points(std::string title, std::vector<double> x, std::vector<double> y, std::string style) {
+  return add({std::move(title), std::move(x), std::move(y), "points", std::move(style)});
+}
+
+Panel& Figure::panel(std::string xlabel, std::string ylabel, std::string panel_title) {
+  Panel p;
+  p.xlabel = std::move(xlabel);
+  p.ylabel = std::move(ylabel);
+  p.title = std::move(panel_title);
+  panels.push_back(std::move(p));
+  return panels.back();
+}
+
+namespace {
+
+// A gnuplot double-quoted string literal.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string data_text(const Figure& figure) {
+  std::ostringstream out;
+  out << "# " << figure.title << "\n# One block per series (gnuplot 'index'); columns: x y\n";
+  int index = 0;
+  for (const auto& panel : figure.panels) {
+    for (const auto& s : panel.series) {
+      out << "\n\n# index " << index++ << ": " << (s.title.empty() ? "(no legend entry)" : s.title)
+          << "  [" << panel.xlabel << " | " << panel.ylabel << "]\n";
+      for (std::size_t i = 0; i < s.x.size(); ++i) out << fmt::format("{:.17g} {:.17g}\n", s.x[i], s.y[i]);
+      if (s.x.empty()) out << "NaN NaN\n";  // an empty block would shift every later index
+    }
+  }
+  return out.str();
+}
+
+bool has_display() {
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (display && *display) || (wayland && *wayland);
+}
+
+// gnuplot-nox has no window terminal; ask gnuplot which terminals it has.
+bool gnuplot_has_window_terminal() {
+  FILE* pipe = popen("gnuplot -e 'print GPVAL_TERMINALS' 2>&1", "r");
+  if (!pipe) return false;
+  std::string terminals;
+  char buffer[512];
+  while (fgets(buffer, sizeof buffer, pipe)) terminals += buffer;
+  pclose(pipe);
+  std::istringstream words(terminals);
+  for (std::string word; words >> word;)
+    if (word == "qt" || word == "wxt" || word == "x11") return true;
+  return false;
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
+  std::ostringstream gp;
+  gp << "# " << figure.title << "\n"
+     << "# Draws " << figure.name << " from " << data_file << ". Restyle freely, then redraw from this folder:\n"
+     << "#   gnuplot -e \"fmt='pdf'\" " << figure.name << ".gp     (fmt: pdf, png, svg; or 'show' for a window)\n"
+     << "if (!exists(\"fmt\")) fmt = \"png\"\n"
+     << "if (!exists(\"out\")) out = \"" << figure.name << ".\" . fmt\n"
+     << fmt::format("if (fmt eq \"pdf\") {{ set terminal pdfcairo enhanced color size {}in,{}in font \"Sans,9\" linewidth 1.5 }}\n",
+                    figure.width_in, figure.height_in)
+     << fmt::format("if (fmt eq \"png\") {{ set terminal pngcairo enhanced color size {},{} font \"Sans,10\" linewidth 1.5 }}\n",
+                    static_cast<int>(figure.width_in * 150), static_cast<int>(figure.height_in * 150))
+     << fmt::format("if (fmt eq \"svg\") {{ set terminal svg enhanced size {},{} font \"Sans,10\" linewidth 1.5 background \"white\" }}\n",
+                    static_cast<int>(figure.width_in * 110), static_cast<int>(figure.height_in * 110))
+     << "if (fmt ne \"show\") { set output out }\n"
+     << "set encoding utf8\n"
+     << "data = " << quoted(data_file) << "\n";
+  const bool multi = figure.panels.size() > 1;
+  if (multi) gp << "set multiplot title " << quoted(figure.title) << " font \",11\"\n";
+  int index = 0;
+  const double stacked_height = 0.92 / static_cast<double>(figure.panels.size());
+  for (std::size_t p = 0; p < figure.panels.size(); ++p) {
+    const Panel& panel = figure.panels[p];
+    gp << "\n# --- panel " << p + 1 << (panel.title.empty() ? "" : ": " + panel.title) << "\n";
+    if (p) gp << "reset\n";
+    if (multi) {
+      const auto place = panel.place.value_or(std::array<double, 4>{
+          0.0, 0.92 - stacked_height * static_cast<double>(p + 1), 1.0, stacked_height});
+      gp << fmt::format("set origin {},{}\nset size {},{}\n", place[0], place[1], place[2], place[3]);
+    }
+    const std::string title = multi ? panel.title : (panel.title.empty() ? figure.title : figure.title + "\\n" + panel.title);
+    gp << "set title " << quoted(title) << "\n"
+       << "set xlabel " << quoted(panel.xlabel) << "\n"
+       << "set ylabel " << quoted(panel.ylabel) << "\n"
+       << "set grid lc rgb '#dddddd'\n"
+       << "set key " << panel.key << " box opaque samplen 2\n";
+    if (figure.left_edge) gp << fmt::format("set lmargin at screen {}\n", *figure.left_edge);
+    if (figure.right_edge) gp << fmt::format("set rmargin at screen {}\n", *figure.right_edge);
+    if (panel.logx) gp << "set logscale x\nset format x \"10^{%L}\"\n";
+    if (panel.logy) gp << "set logscale y\nset format y \"10^{%L}\"\n";
+    for (const auto& command : panel.commands) gp << command << "\n";
+    gp << "plot ";
+    for (std::size_t s = 0; s < panel.series.size(); ++s) {
+      const Series& series = panel.series[s];
+      gp << (s ? ", \\\n     " : "") << "data index " << index++ << " using 1:2 with " << series.with
+         << (series.style.empty() ? "" : " " + series.style) << " "
+         << (series.title.empty() ? "notitle" : "title " + quoted(series.title));
+    }
+    gp << "\n";
+  }
+  if (multi) gp << "unset multiplot\n";
+  return gp.str();
+}
+
+FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
+  namespace fs = std::filesystem;
+  for (const auto& format : options.formats)
+    if (format != "pdf" && format != "png" && format != "svg")
+      throw std::invalid_argument(fmt::format("figure format '{}': expected pdf, png or svg", format));
+  fs::create_directories(options.dir);
+  FigureFiles result;
+  const std::string data_file = figure.name + ".dat";
+  write_file_atomic(options.dir / data_file, data_text(figure));
+  write_file_atomic(options.dir / (figure.name + ".gp"), gnuplot_script(figure, data_file));
+  result.files = {options.dir / data_file, options.dir / (figure.name + ".gp")};
+
+  if (options.render) {
+    for (const auto& format : options.formats) {
+      const fs::path final_path = options.dir / (figure.name + "." + format);
+      const fs::path temporary = temporary_sibling(final_path);
+      const fs::path log = temporary_sibling(options.dir / (figure.name + ".gnuplot-log"));
+      {
+        // gnuplot-iostream: a pipe into a batch gnuplot run from the figure's folder, so the
+        // script's relative data path works exactly as it will for a slide author.
+        Gnuplot gp(fmt::format("cd {} && gnuplot 2>{}", quoted(options.dir.string()), quoted(log.string())));
+        gp << "fmt = " << quoted(format) << "; out = " << quoted(temporary.filename().string()) << "\n"
+           << "load " << quoted(figure.name + ".gp") << "\n";
+      }  // the destructor waits for gnuplot to finish
+      const std::string messages = read_file(log);
+      std::error_code ignored;
+      fs::remove(log, ignored);
+      if (!fs::exists(temporary) || fs::file_size(temporary) == 0) {
+        fs::remove(temporary, ignored);
+        throw std::runtime_error(fmt::format("gnuplot could not draw {}: {}", final_path.string(), messages));
+      }
+      commit_file(temporary, final_path);
+      result.files.push_back(final_path);
+      if (!messages.empty()) result.notes.push_back(fmt::format("gnuplot on {}: {}", final_path.filename().string(), messages));
+    }
+  }
+  if (options.show) {
+    if (!has_display()) {
+      result.notes.push_back("--show: no display (DISPLAY is unset); the figure files are written");
+    } else if (!gnuplot_has_window_terminal()) {
+      result.notes.push_back("--show: this gnuplot has no window terminal (gnuplot-nox); install gnuplot-qt to see windows");
+    } else {
+      Gnuplot gp(fmt::format("cd {} && gnuplot -persist", quoted(options.dir.string())));
+      gp << "fmt = \"show\"\nload " << quoted(figure.name + ".gp") << "\n";
+    }
+  }
+  return result;
+}
+
+}  // namespace kit

@@ -1,0 +1,62 @@
+#include <kit/measure.hpp>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace kit {
+
+LogLogFit fit_loglog(std::span<const double> x, std::span<const double> y) {
+  if (x.size() != y.size() || x.size() < 2)
+    throw std::invalid_argument("fit_loglog needs two or more (x, y) pairs of equal count");
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n = static_cast<double>(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!(x[i] > 0) || !(y[i] > 0))
+      throw std::invalid_argument("fit_loglog needs positive values (log of x and y)");
+    const double lx = std::log10(x[i]), ly = std::log10(y[i]);
+    sx += lx;
+    sy += ly;
+    sxx += lx * lx;
+    sxy += lx * ly;
+  }
+  const double denominator = n * sxx - sx * sx;
+  if (denominator == 0) throw std::invalid_argument("fit_loglog needs two distinct x values");
+  LogLogFit fit;
+  fit.slope = (n * sxy - sx * sy) / denominator;
+  fit.intercept = (sy - fit.slope * sx) / n;
+  return fit;
+}
+
+std::vector<long> geometric_counts(long lo, long hi, int per_decade) {
+  if (lo < 1 || hi < lo || per_decade < 1)
+    throw std::invalid_argument("geometric_counts needs 1 <= lo <= hi and per_decade >= 1");
+  std::vector<long> counts;
+  const double decades = std::log10(static_cast<double>(hi) / static_cast<double>(lo));
+  const long points = static_cast<long>(std::ceil(decades * per_decade - 1e-9));
+  for (long i = 0; i <= points; ++i) {
+    const double fraction = points == 0 ? 0.0 : static_cast<double>(i) / static_cast<double>(points);
+    const long n = std::lround(static_cast<double>(lo) * std::pow(10.0, fraction * decades));
+    if (counts.empty() || n > counts.back()) counts.push_back(n);
+  }
+  return counts;
+}
+
+std::size_t argmin(std::span<const double> values) {
+  std::size_t best = values.size();
+  double best_value = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (std::isfinite(values[i]) && (best == values.size() || values[i] < best_value)) {
+      best = i;
+      best_value = values[i];
+    }
+  }
+  if (best == values.size()) throw std::invalid_argument("argmin of no finite value");
+  return best;
+}
+
+bool agrees(double measured, double predicted, double rel, double abs) {
+  return std::abs(measured - predicted) <= rel * std::abs(predicted) + abs;
+}
+
+}  // namespace kit

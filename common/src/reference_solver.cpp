@@ -1,0 +1,111 @@
+#include <kit/reference_solver.hpp>
+
+#include <cmath>
+#include <exception>
+#include <utility>
+
+#include <fmt/format.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+namespace kit {
+
+const char* name(GslStepper stepper) {
+  switch (stepper) {
+    case GslStepper::rk8pd: return "rk8pd";
+    case GslStepper::rkck: return "rkck";
+    case GslStepper::rkf45: return "rkf45";
+    case GslStepper::rk4: return "rk4";
+    case GslStepper::rk2: return "rk2";
+  }
+  return "?";
+}
+
+namespace {
+const gsl_odeiv2_step_type* step_type(GslStepper stepper) {
+  switch (stepper) {
+    case GslStepper::rk8pd: return gsl_odeiv2_step_rk8pd;
+    case GslStepper::rkck: return gsl_odeiv2_step_rkck;
+    case GslStepper::rkf45: return gsl_odeiv2_step_rkf45;
+    case GslStepper::rk4: return gsl_odeiv2_step_rk4;
+    case GslStepper::rk2: return gsl_odeiv2_step_rk2;
+  }
+  throw std::invalid_argument("unknown GSL stepper");
+}
+}  // namespace
+
+struct GslSolver::Impl {
+  std::size_t dim;
+  Rhs f;
+  GslOptions options;
+  long rhs_evals = 0;
+  std::exception_ptr pending;  // an exception thrown by f, carried across GSL's C frames
+  bool non_finite = false;
+  gsl_odeiv2_system system{};
+  gsl_odeiv2_driver* driver = nullptr;
+
+  // GSL calls this; it must not throw through C code.
+  static int evaluate(double t, const double y[], double dydt[], void* self) {
+    auto* impl = static_cast<Impl*>(self);
+    ++impl->rhs_evals;
+    try {
+      impl->f(t, y, dydt);
+    } catch (...) {
+      impl->pending = std::current_exception();
+      return GSL_EBADFUNC;
+    }
+    for (std::size_t i = 0; i < impl->dim; ++i) {
+      // GSL's error control would otherwise accept a NaN step (max(NaN, r) ignores it).
+      if (!std::isfinite(dydt[i])) {
+        impl->non_finite = true;
+        return GSL_EBADFUNC;
+      }
+    }
+    return GSL_SUCCESS;
+  }
+};
+
+GslSolver::GslSolver(std::size_t dim, Rhs f, GslOptions options)
+    : impl_(std::make_unique<Impl>()) {
+  gsl_set_error_handler_off();  // report through return codes, never abort()
+  impl_->dim = dim;
+  impl_->f = std::move(f);
+  impl_->options = options;
+  impl_->system = {&Impl::evaluate, nullptr, dim, impl_.get()};
+  impl_->driver = gsl_odeiv2_driver_alloc_standard_new(&impl_->system, step_type(options.stepper),
+                                                       options.h0, options.atol, options.rtol,
+                                                       1.0, 0.0);
+  if (!impl_->driver) throw SolverError("GSL could not allocate an odeiv2 driver");
+  gsl_odeiv2_driver_set_nmax(impl_->driver, static_cast<unsigned long>(options.max_steps));
+}
+
+GslSolver::~GslSolver() {
+  if (impl_ && impl_->driver) gsl_odeiv2_driver_free(impl_->driver);
+}
+
+void GslSolver::advance(double& t, double* u, double t1) {
+  if (t1 == t) return;
+  const double t_start = t;
+  const int status = gsl_odeiv2_driver_apply(impl_->driver, &t, t1, u);
+  if (impl_->pending) std::rethrow_exception(std::exchange(impl_->pending, nullptr));
+  if (status == GSL_SUCCESS) return;
+  if (impl_->non_finite) {
+    throw SolverError(fmt::format(
+        "GSL {} reference: the right-hand side returned NaN or Inf near t = {:.6g} s",
+        name(impl_->options.stepper), t));
+  }
+  throw SolverError(fmt::format("GSL {} reference failed between t = {:.6g} s and {:.6g} s, "
+                                "stopped at t = {:.6g} s: {}",
+                                name(impl_->options.stepper), t_start, t1, t,
+                                gsl_strerror(status)));
+}
+
+Stats GslSolver::stats() const {
+  Stats s;
+  s.rhs_evals = impl_->rhs_evals;
+  // The driver exposes only its step counter (accepted and rejected together).
+  s.steps = static_cast<long>(impl_->driver->n);
+  return s;
+}
+
+}  // namespace kit

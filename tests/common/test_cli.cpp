@@ -1,0 +1,91 @@
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include <catch2/catch.hpp>
+
+#include <kit/cli.hpp>
+
+#include "process.hpp"
+
+namespace {
+// Runs a small chapter app with the given flags; returns its exit code and stderr text.
+struct Outcome {
+  int code;
+  std::string err;
+  bool body_ran;
+  double dt;
+};
+Outcome run_app(std::vector<std::string> args, const std::string& out_dir = "unused-out") {
+  double dt = 0.1;
+  long count = 5;
+  kit::ChapterApp app("toy", out_dir, "a toy chapter");
+  app.add_real("--dt", dt, "time step [s]", kit::positive(10));
+  app.add_count("--count", count, "how many", 1, 100);
+  args.insert(args.begin(), "toy");
+  std::vector<const char*> argv;
+  for (auto& a : args) argv.push_back(a.c_str());
+  std::ostringstream captured;
+  auto* old = std::cerr.rdbuf(captured.rdbuf());
+  bool ran = false;
+  const int code = app.run(int(argv.size()), argv.data(), [&] { ran = true; });
+  std::cerr.rdbuf(old);
+  return {code, captured.str(), ran, dt};
+}
+}  // namespace
+
+TEST_CASE("ranges reject NaN and infinities and describe themselves") {
+  CHECK_FALSE(kit::positive().contains(NAN));
+  CHECK_FALSE(kit::any_finite().contains(INFINITY));
+  CHECK_FALSE(kit::positive(10).contains(0.0));
+  CHECK(kit::positive(10).contains(10.0));
+  CHECK_FALSE(kit::nonzero_finite().contains(0.0));
+  CHECK(kit::positive(10).describe() == "a finite number in (0, 10]");
+  CHECK(kit::between(-1, 1).describe() == "a finite number in [-1, 1]");
+  CHECK(kit::positive().describe() == "a finite number > 0");
+}
+
+TEST_CASE("a bad value is a usage error naming the flag, the value and the range; exit 2") {
+  for (const char* bad : {"-1", "nan", "inf", "0", "abc", "1e999"}) {
+    const auto outcome = run_app({"--dt", bad, "--json"});
+    INFO("--dt " << bad << " -> " << outcome.err);
+    CHECK(outcome.code == 2);
+    CHECK_FALSE(outcome.body_ran);
+    CHECK_THAT(outcome.err, Catch::Contains("--dt") && Catch::Contains(bad) && Catch::Contains("(0, 10]"));
+  }
+}
+
+TEST_CASE("whole-number flags are checked the same way") {
+  const auto outcome = run_app({"--count", "0"});
+  CHECK(outcome.code == 2);
+  CHECK_THAT(outcome.err, Catch::Contains("--count") && Catch::Contains("[1, 100]"));
+}
+
+TEST_CASE("an unknown flag or format is a usage error") {
+  CHECK(run_app({"--bogus"}).code == 2);
+  CHECK_THAT(run_app({"--bogus"}).err, Catch::Contains("--bogus"));
+  const auto format = run_app({"--format", "pdf,gif"});
+  CHECK(format.code == 2);
+  CHECK_THAT(format.err, Catch::Contains("gif"));
+}
+
+TEST_CASE("good flags reach the body and the summary's parameters") {
+  const auto outcome = run_app({"--dt", "0.25", "--quiet", "--no-plot"});
+  CHECK(outcome.code == 0);
+  CHECK(outcome.body_ran);
+  CHECK(outcome.dt == 0.25);
+}
+
+TEST_CASE("a UsageError thrown by the body exits 2, any other failure exits 1") {
+  kit::ChapterApp app("toy", "unused", "toy");
+  const char* argv[] = {"toy", "--quiet"};
+  std::ostringstream captured;
+  auto* old = std::cerr.rdbuf(captured.rdbuf());
+  const int usage = app.run(2, argv, [] { throw kit::UsageError("--t-end must be a whole number of steps"); });
+  kit::ChapterApp app2("toy", "unused", "toy");
+  const int failure = app2.run(2, argv, [] { throw std::runtime_error("solver failed"); });
+  std::cerr.rdbuf(old);
+  CHECK(usage == 2);
+  CHECK(failure == 1);
+  CHECK_THAT(captured.str(), Catch::Contains("whole number of steps") && Catch::Contains("solver failed"));
+}

@@ -1,0 +1,51 @@
+#include <cmath>
+#include <limits>
+
+#include <catch2/catch.hpp>
+
+#include <kit/free_fall.hpp>
+#include <kit/reference_solver.hpp>
+
+TEST_CASE("the GSL reference matches free fall's closed form to 1e-10") {
+  kit::FreeFall fall;
+  fall.x0 = 100.0, fall.v0 = 12.0;
+  const std::vector<double> times{0.5, 1.0, 2.0, 4.5};
+  kit::Stats stats;
+  const auto states = kit::reference_solution(fall, 0.0, fall.initial_state(), times, {}, &stats);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    CHECK(states[i][0] == Approx(fall.position(times[i])).margin(1e-10));
+    CHECK(states[i][1] == Approx(fall.velocity(times[i])).margin(1e-10));
+  }
+  CHECK(stats.rhs_evals > 0);
+}
+
+TEST_CASE("the GSL reference matches a harmonic oscillator over ten periods to 1e-10") {
+  const double omega = 2.0;
+  auto oscillator = [omega](double, const kit::Vec2& u) { return kit::Vec2(u[1], -omega * omega * u[0]); };
+  const double t_end = 10 * 2 * M_PI / omega;
+  const auto states = kit::reference_solution(oscillator, 0.0, kit::Vec2(1.0, 0.0), {t_end});
+  CHECK(states[0][0] == Approx(std::cos(omega * t_end)).margin(1e-10));
+  CHECK(states[0][1] == Approx(-omega * std::sin(omega * t_end)).margin(1e-10));
+}
+
+TEST_CASE("a NaN from the right-hand side is a SolverError, never an accepted step or an abort") {
+  auto poisoned = [](double t, const kit::Vec2& u) {
+    return kit::Vec2(u[1], t > 0.5 ? std::numeric_limits<double>::quiet_NaN() : -1.0);
+  };
+  CHECK_THROWS_AS(kit::reference_solution(poisoned, 0.0, kit::Vec2(0.0, 0.0), {1.0}), kit::SolverError);
+  CHECK_THROWS_WITH(kit::reference_solution(poisoned, 0.0, kit::Vec2(0.0, 0.0), {1.0}), Catch::Contains("NaN"));
+}
+
+TEST_CASE("an exception thrown by the right-hand side crosses GSL unchanged") {
+  auto throwing = [](double, const kit::Vec2&) -> kit::Vec2 { throw std::out_of_range("model left its domain"); };
+  CHECK_THROWS_AS(kit::reference_solution(throwing, 0.0, kit::Vec2(0.0, 0.0), {1.0}), std::out_of_range);
+}
+
+TEST_CASE("a GSL failure (step budget exhausted) is a SolverError naming the stepper and times") {
+  kit::GslOptions options;
+  options.max_steps = 3;
+  auto fast = [](double, const kit::Vec2& u) { return kit::Vec2(u[1], -1e6 * u[0]); };
+  CHECK_THROWS_AS(kit::reference_solution(fast, 0.0, kit::Vec2(1.0, 0.0), {10.0}, options), kit::SolverError);
+  CHECK_THROWS_WITH(kit::reference_solution(fast, 0.0, kit::Vec2(1.0, 0.0), {10.0}, options),
+                    Catch::Contains("rk8pd") && Catch::Contains("t = 0"));
+}

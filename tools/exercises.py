@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""Generate exercises/ from solutions/, or check that the committed copy is current.
+
+In solutions/, each part a student writes sits between two marker lines:
+
+    // BEGIN SOLUTION ex 1.1: a hint for the student
+    ... reference code ...
+    // END SOLUTION
+
+In exercises/, that region becomes the hint as a TODO and a placeholder that compiles
+and throws kit::NotImplemented, whose message names the exercise and the file:
+
+    // TODO(ex 1.1): a hint for the student
+    throw kit::NotImplemented("ex 1.1", "explicit_euler.hpp");
+
+Everything else is copied as it is. Usage:
+    exercises.py generate SOLUTIONS EXERCISES   rewrite EXERCISES from SOLUTIONS
+    exercises.py check SOLUTIONS EXERCISES      exit 1 and show the difference if stale
+    exercises.py list SOLUTIONS                 print "id<TAB>file" for every region
+"""
+import difflib
+import pathlib
+import re
+import sys
+
+BEGIN = re.compile(r"^(?P<indent>\s*)// BEGIN SOLUTION ex (?P<id>\d+\.\d+):\s*(?P<hint>.+?)\s*$")
+END = re.compile(r"^\s*// END SOLUTION\s*$")
+
+README = """# Exercises
+
+This folder is generated from `solutions/` by `./kit exercises`; do not edit it in the
+kit's repository. To work on the exercises, copy it somewhere of your own:
+
+    cp -r exercises ~/my-kit-work
+    ./kit build --impl ~/my-kit-work     # chapters now run your code
+    ./kit grade ~/my-kit-work            # your score, exercise by exercise
+
+Each `// TODO(ex N.k): hint` marks code to write. Until you write it, the placeholder
+below the TODO throws an error naming the exercise and the file, so a chapter or a test
+that needs it stops with that message instead of printing wrong numbers.
+"""
+
+
+class MarkerError(Exception):
+    pass
+
+
+def transform(text, relpath):
+    """Returns (exercise text, [exercise ids]) for one solution file."""
+    out, ids, region = [], [], None
+    for number, line in enumerate(text.splitlines(keepends=True), start=1):
+        begin, end = BEGIN.match(line), END.match(line)
+        if region is None:
+            if begin:
+                region = begin
+                ids.append(begin["id"])
+                indent = begin["indent"]
+                out.append(f"{indent}// TODO(ex {begin['id']}): {begin['hint']}\n")
+                out.append(f'{indent}throw kit::NotImplemented("ex {begin["id"]}", "{relpath}");\n')
+            elif end or "BEGIN SOLUTION" in line:
+                raise MarkerError(f"{relpath}:{number}: marker out of place: {line.strip()}")
+            else:
+                out.append(line)
+        else:
+            if begin or ("BEGIN SOLUTION" in line):
+                raise MarkerError(f"{relpath}:{number}: BEGIN SOLUTION inside another region")
+            if end:
+                region = None
+    if region is not None:
+        raise MarkerError(f"{relpath}: region ex {region['id']} has no END SOLUTION")
+    return "".join(out), ids
+
+
+def expected_tree(solutions):
+    files = {"README.md": README}
+    for path in sorted(solutions.rglob("*")):
+        if path.is_file() and path.name != "README.md":
+            rel = path.relative_to(solutions).as_posix()
+            files[rel], _ = transform(path.read_text(encoding="utf-8"), rel)
+    return files
+
+
+def actual_tree(exercises):
+    if not exercises.is_dir():
+        return {}
+    return {p.relative_to(exercises).as_posix(): p.read_text(encoding="utf-8")
+            for p in sorted(exercises.rglob("*")) if p.is_file()}
+
+
+def main(argv):
+    if len(argv) < 3 or argv[1] not in ("generate", "check", "list"):
+        print(__doc__, file=sys.stderr)
+        return 2
+    solutions = pathlib.Path(argv[2])
+    try:
+        if argv[1] == "list":
+            for path in sorted(solutions.rglob("*.hpp")):
+                rel = path.relative_to(solutions).as_posix()
+                for exercise in dict.fromkeys(transform(path.read_text(encoding="utf-8"), rel)[1]):
+                    print(f"{exercise}\t{rel}")
+            return 0
+        exercises = pathlib.Path(argv[3])
+        want, have = expected_tree(solutions), actual_tree(exercises)
+    except MarkerError as error:
+        print(f"exercises: {error}", file=sys.stderr)
+        return 2
+    if argv[1] == "check":
+        stale = sorted(set(want) ^ set(have) | {f for f in want if f in have and want[f] != have[f]})
+        for rel in stale:
+            print(f"exercises: {rel} differs from what solutions/ generates", file=sys.stderr)
+            sys.stderr.writelines(difflib.unified_diff(
+                have.get(rel, "").splitlines(True), want.get(rel, "").splitlines(True),
+                f"exercises/{rel} (committed)", f"exercises/{rel} (generated)"))
+        if stale:
+            print("exercises: run './kit exercises' to regenerate; never edit exercises/ by hand",
+                  file=sys.stderr)
+        return 1 if stale else 0
+    for rel in set(have) - set(want):
+        (exercises / rel).unlink()
+    for rel, text in want.items():
+        target = exercises / rel
+        target.parent.mkdir(parents=True, exist_ok=True)
+        if have.get(rel) != text:
+            target.write_text(text, encoding="utf-8")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
