@@ -14,17 +14,13 @@ TEST_CASE("ex 1.1: explicit Euler on free fall lands on x0 + kΔt·v0 + k(k−1)
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 25; ++trial) {
     const auto c = kit::test::random_fall(rng);
-    INFO("x0 = " << c.x0 << " m, v0 = " << c.v0 << " m/s, g = " << c.g << " m/s², dt = " << c.dt << " s, k = " << c.steps);
+    INFO(kit::test::describe(c));
     const double g = c.g;
     auto f = [g](double, const Vec<2>& u) { return Vec<2>(u[1], g); };
     Vec<2> u(c.x0, c.v0);
     for (long k = 0; k < c.steps; ++k) u = kit::explicit_euler_step(f, double(k) * c.dt, u, c.dt);
-    const double k = double(c.steps);
-    const double x = c.x0 + k * c.dt * c.v0 + 0.5 * k * (k - 1) * c.dt * c.dt * g;
-    const double v = c.v0 + k * c.dt * g;
-    const double scale = std::abs(c.x0) + std::abs(c.v0) * k * c.dt + std::abs(g) * k * k * c.dt * c.dt + 1;
-    CHECK(u[0] == Approx(x).margin(1e-12 * scale));
-    CHECK(u[1] == Approx(v).margin(1e-12 * (std::abs(c.v0) + std::abs(g) * k * c.dt + 1)));
+    CHECK(u[0] == Approx(kit::test::explicit_euler_x(c)).margin(1e-12 * kit::test::scale(c)));
+    CHECK(u[1] == Approx(c.v0 + double(c.steps) * c.dt * g).margin(1e-12 * kit::test::scale(c)));
   }
 }
 

@@ -1,7 +1,10 @@
 #pragma once
 // Measurement: convergence-order fits, step sweeps and error norms.
 #include <span>
+#include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace kit {
 
@@ -19,6 +22,23 @@ std::vector<long> geometric_counts(long lo, long hi, int per_decade);
 
 /// Index of the smallest finite value (the first one on ties).
 std::size_t argmin(std::span<const double> values);
+
+/// Errors reached over a range of time steps: one curve of a convergence or round-off plot.
+struct Sweep {
+  std::vector<double> dt;     ///< time steps [s]
+  std::vector<double> error;  ///< |error| reached with each, in the quantity's unit
+
+  void add(double step, double err) {
+    dt.push_back(step);
+    error.push_back(err);
+  }
+  /// Observed order: least-squares slope of log error against log Δt.
+  double order() const { return fit_loglog(dt, error).slope; }
+  /// Index of the smallest error: the best Δt before round-off wins.
+  std::size_t best() const { return argmin(error); }
+  /// {"dt": [...], "error": [...]} for the --json summary.
+  nlohmann::json to_json() const { return {{"dt", dt}, {"error", error}}; }
+};
 
 /// True when |measured − predicted| is within what round-off can explain:
 /// rel·|predicted| + abs. Both bounds are stated by the caller, never hidden.

@@ -53,12 +53,12 @@ class GslSolver {
   std::unique_ptr<Impl> impl_;
 };
 
-/// The reference solution of u' = f(t, u), u(t0) = u0, at each of `times` (ascending, ≥ t0).
-/// f is any callable f(t, u) → u' on fixed-size states.
+/// The reference solution of u' = f(t, u), u(t0) = u0, sampled at each of `times`
+/// (ascending, ≥ t0). f is any callable f(t, u) → u' on fixed-size states.
 template <class System, int N>
-std::vector<Vec<N>> reference_solution(const System& f, double t0, const Vec<N>& u0,
-                                       const std::vector<double>& times, GslOptions options = {},
-                                       Stats* stats = nullptr) {
+Trajectory<Vec<N>> reference_solution(const System& f, double t0, const Vec<N>& u0,
+                                      const std::vector<double>& times, GslOptions options = {},
+                                      Stats* stats = nullptr) {
   GslSolver solver(
       static_cast<std::size_t>(N),
       [&f](double t, const double* u, double* dudt) {
@@ -66,16 +66,15 @@ std::vector<Vec<N>> reference_solution(const System& f, double t0, const Vec<N>&
         derivative = f(t, Eigen::Map<const Vec<N>>(u));
       },
       options);
-  std::vector<Vec<N>> states;
-  states.reserve(times.size());
+  Trajectory<Vec<N>> samples;
   double t = t0;
   Vec<N> u = u0;
   for (double t1 : times) {
     solver.advance(t, u.data(), t1);
-    states.push_back(u);
+    samples.push(t1, u);
   }
   if (stats) *stats = solver.stats();
-  return states;
+  return samples;
 }
 
 }  // namespace kit
