@@ -8,7 +8,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 [ -f "$root/slides/$deck.tex" ] || { echo "build_slides: no deck slides/$deck.tex" >&2; exit 2; }
 mkdir -p "$out"
 log="$out/$deck.latexmk.log"
-if ! TEXINPUTS="$figures//:$root/slides//:" latexmk -pdf -interaction=nonstopmode -halt-on-error \
+if ! TEXINPUTS="$figures//:$root/slides//:" latexmk -g -pdf -interaction=nonstopmode -halt-on-error \
       -outdir="$out" "$root/slides/$deck.tex" >"$log" 2>&1; then
   echo "build_slides: $deck failed; the end of the LaTeX log:" >&2
   grep -E -A3 "^!|not found" "$out/$deck.log" >&2 || tail -30 "$log" >&2
