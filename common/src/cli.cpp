@@ -117,6 +117,15 @@ void ChapterApp::figure(const Figure& fig) {
   for (const auto& note : files.notes) std::cerr << chapter_ << ": " << note << "\n";
 }
 
+void ChapterApp::add_divergence_flag() {
+  app_.add_flag("--fail-on-divergence", options_.fail_on_divergence,
+                "exit with code 3 when a simulation diverged (it is reported either way)");
+}
+
+void ChapterApp::diverged(const std::string& run, const std::string& what) {
+  summary_["divergences"].push_back({{"run", run}, {"what", what}});
+}
+
 int ChapterApp::run(int argc, const char* const* argv, const std::function<void()>& body) {
   try {
     app_.parse(argc, argv);
@@ -141,7 +150,8 @@ int ChapterApp::run(int argc, const char* const* argv, const std::function<void(
   } else if (!options_.quiet && !options_.no_plot) {
     std::cout << "\nFigures (data, gnuplot script, renders) are in " << options_.out_dir << "\n";
   }
-  return exit_code::ok;
+  const bool any_divergence = summary_.contains("divergences");
+  return (any_divergence && options_.fail_on_divergence) ? exit_code::diverged : exit_code::ok;
 }
 
 }  // namespace kit

@@ -1,5 +1,6 @@
 #include <kit/figure.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -100,7 +101,7 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
      << "#   gnuplot -e \"fmt='pdf'\" " << figure.name << ".gp     (fmt: pdf, png, svg; or 'show' for a window)\n"
      << "if (!exists(\"fmt\")) fmt = \"png\"\n"
      << "if (!exists(\"out\")) out = \"" << figure.name << ".\" . fmt\n"
-     << fmt::format("if (fmt eq \"pdf\") {{ set terminal pdfcairo enhanced color size {}in,{}in font \"Sans,9\" linewidth 1.5 }}\n",
+     << fmt::format("if (fmt eq \"pdf\") {{ set terminal pdfcairo enhanced color size {}in,{}in font \"Sans,11\" linewidth 1.5 }}\n",
                     figure.width_in, figure.height_in)
      << fmt::format("if (fmt eq \"png\") {{ set terminal pngcairo enhanced color size {},{} font \"Sans,10\" linewidth 1.5 }}\n",
                     static_cast<int>(figure.width_in * 150), static_cast<int>(figure.height_in * 150))
@@ -112,14 +113,17 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
   const bool multi = figure.panels.size() > 1;
   if (multi) gp << "set multiplot title " << quoted(figure.title) << " font \",11\"\n";
   int index = 0;
-  const double stacked_height = 0.92 / static_cast<double>(figure.panels.size());
+  const int columns = std::max(1, figure.columns);
+  const int rows = static_cast<int>((figure.panels.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
+  const double cell_height = 0.92 / rows, cell_width = 1.0 / columns;
   for (std::size_t p = 0; p < figure.panels.size(); ++p) {
     const Panel& panel = figure.panels[p];
     gp << "\n# --- panel " << p + 1 << (panel.title.empty() ? "" : ": " + panel.title) << "\n";
     if (p) gp << "reset\n";
     if (multi) {
+      const int row = static_cast<int>(p) / columns, column = static_cast<int>(p) % columns;
       const auto place = panel.place.value_or(std::array<double, 4>{
-          0.0, 0.92 - stacked_height * static_cast<double>(p + 1), 1.0, stacked_height});
+          cell_width * column, 0.92 - cell_height * (row + 1), cell_width, cell_height});
       gp << fmt::format("set origin {},{}\nset size {},{}\n", place[0], place[1], place[2], place[3]);
     }
     const std::string title = multi ? panel.title : (panel.title.empty() ? figure.title : figure.title + "\\n" + panel.title);

@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "explicit_euler.hpp"
-#include "random_cases.hpp"
+#include "cases.hpp"
 
 using kit::test::uniform;
 

@@ -85,4 +85,14 @@ inline std::vector<std::filesystem::path> files_under(const std::filesystem::pat
   return files;
 }
 
+/// A bad command line and the text its error message must contain (the offending flag).
+struct BadInput {
+  std::vector<std::string> args;
+  std::string names;
+};
+
+/// Each bad input must exit 2, name the flag on stderr, print nothing on stdout, and leave the
+/// --out folder uncreated.
+void expect_usage_errors(const std::string& binary, const std::vector<BadInput>& cases);
+
 }  // namespace kit::test

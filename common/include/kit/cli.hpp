@@ -57,6 +57,7 @@ struct CommonOptions {
   bool show = false;                               ///< --show: open a window if a display exists
   bool json = false;                               ///< --json: one JSON object on stdout
   bool quiet = false;                              ///< --quiet: no text on stdout
+  bool fail_on_divergence = false;                 ///< --fail-on-divergence: exit 3 if a run diverged
 };
 
 /// One chapter binary: its flags, its text and JSON report, and its figures.
@@ -83,6 +84,12 @@ class ChapterApp {
   /// Writes a figure under --out (data and script always; renders unless --no-plot) and
   /// lists its files in the summary.
   void figure(const Figure& figure);
+
+  /// Adds --fail-on-divergence, for chapters whose runs can blow up.
+  void add_divergence_flag();
+  /// Records that a run diverged: a result, listed under "divergences" in the summary. The
+  /// chapter still finishes and exits 0, or 3 under --fail-on-divergence.
+  void diverged(const std::string& run, const std::string& what);
 
  private:
   std::string chapter_;

@@ -44,6 +44,8 @@ struct Figure {
   /// Plot-area edges as canvas fractions, the same for every panel so stacked axes line up
   /// (a legend "outside right" goes beyond right_edge). Unset: gnuplot chooses.
   std::optional<double> left_edge, right_edge;
+  /// Panels without a `place` fill a grid this many columns wide, row by row.
+  int columns = 1;
   std::vector<Panel> panels;
 
   Figure(std::string name, std::string title) : name(std::move(name)), title(std::move(title)) {}

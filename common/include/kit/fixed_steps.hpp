@@ -1,6 +1,7 @@
 #pragma once
 // Driving a one-step method at a constant Δt: u_{k+1} = step(u_k).
 #include <cmath>
+#include <limits>
 
 #include <kit/state.hpp>
 
@@ -14,15 +15,23 @@ State advance(State u, long n, Step&& step) {
   return u;
 }
 
-/// The whole trajectory (t_k = kΔt, u_k) for k = 0..n.
+/// The whole trajectory (t_k = kΔt, u_k) for k = 0..n. A diverging run is a result, not a
+/// crash: the recording stops before the first state that is not finite or whose norm
+/// exceeds `limit`, and trajectory.divergence says where.
 template <class State, class Step>
-Trajectory<State> record(State u, double dt, long n, Step&& step) {
+Trajectory<State> record(State u, double dt, long n, Step&& step,
+                         double limit = std::numeric_limits<double>::infinity()) {
   Trajectory<State> trajectory;
   trajectory.t.reserve(static_cast<std::size_t>(n) + 1);
   trajectory.u.reserve(static_cast<std::size_t>(n) + 1);
   trajectory.push(0.0, u);
   for (long k = 1; k <= n; ++k) {
     u = step(u);
+    const double size = static_cast<double>(u.norm());
+    if (!std::isfinite(size) || size > limit) {
+      trajectory.divergence = Divergence{k, static_cast<double>(k) * dt, size};
+      break;
+    }
     trajectory.push(static_cast<double>(k) * dt, u);
   }
   return trajectory;

@@ -1,7 +1,10 @@
 #pragma once
 // State vectors, work counters and trajectories shared by every chapter.
-#include <Eigen/Dense>
+#include <optional>
+#include <string>
 #include <vector>
+
+#include <Eigen/Dense>
 
 namespace kit {
 
@@ -44,11 +47,22 @@ struct CountingRhs {
   }
 };
 
-/// Samples (t_k, u_k) of one run, in time order. t in s.
+/// Where a run blew up: the first step whose state was not finite or exceeded the limit.
+struct Divergence {
+  long step = 0;         ///< k of the first bad state
+  double t = 0;          ///< its time [s]
+  double magnitude = 0;  ///< |u_k| (may be inf or NaN)
+  /// "diverged at step k (t = … s), |u| = …", the words every chapter prints.
+  std::string describe() const;
+};
+
+/// Samples (t_k, u_k) of one run, in time order. t in s. When the run diverged, it stops at
+/// the last good state and `divergence` says where.
 template <class State>
 struct Trajectory {
   std::vector<double> t;
   std::vector<State> u;
+  std::optional<Divergence> divergence;
   void push(double time, const State& state) {
     t.push_back(time);
     u.push_back(state);

@@ -1,0 +1,43 @@
+#pragma once
+// One step of each scheme on the spring, behind one signature, for the chapters that compare
+// them. Not an exercise: it only wires the schemes of ex 2.1–3.2 to the spring.
+#include <functional>
+#include <stdexcept>
+
+#include <kit/scheme.hpp>
+#include <kit/spring.hpp>
+
+#include "explicit_euler.hpp"
+#include "implicit_euler_spring.hpp"
+#include "midpoint.hpp"
+#include "rk4.hpp"
+#include "spring_system.hpp"
+#include "symplectic_euler.hpp"
+
+namespace kit {
+
+/// u_k → u_{k+1} for `scheme` on `spring` with step dt [s]. The spring is autonomous, so t is
+/// passed as 0.
+inline std::function<Vec2(const Vec2&)> spring_stepper(Scheme scheme, const Spring& spring, double dt) {
+  const AffineSystem<2> system = spring_system(spring);
+  switch (scheme) {
+    case Scheme::explicit_euler:
+      return [euler = ExplicitEulerAffine<2>(system, dt)](const Vec2& u) { return euler.step(u); };
+    case Scheme::implicit_euler:
+      return [spring, dt](const Vec2& u) { return implicit_euler_spring_step(spring, u, dt); };
+    case Scheme::symplectic_euler:
+      return [spring, dt](const Vec2& u) {
+        const auto accel = [&](double, const Vec<1>& x, const Vec<1>& v) {
+          return Vec<1>((spring.stiffness * (spring.rest_length - x[0]) - spring.damping * v[0]) / spring.mass);
+        };
+        return symplectic_euler_step(accel, 0.0, u, dt);
+      };
+    case Scheme::midpoint:
+      return [system, dt](const Vec2& u) { return midpoint_step(system, 0.0, u, dt); };
+    case Scheme::rk4:
+      return [system, dt](const Vec2& u) { return rk4_step(system, 0.0, u, dt); };
+  }
+  throw std::invalid_argument("unknown scheme");
+}
+
+}  // namespace kit

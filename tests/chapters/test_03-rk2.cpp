@@ -1,0 +1,85 @@
+// Chapter 3 end to end: midpoint RK2 exact on free fall, every scheme's fitted order, symplectic
+// Euler's bounded energy, the evaluation counts of the cost table, and bad input.
+#include <cmath>
+#include <map>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "process.hpp"
+
+using nlohmann::json;
+
+namespace {
+const std::string binary = KIT_CHAPTER_BINARY;
+
+json run_chapter(std::vector<std::string> args) {
+  kit::test::TempDir out("ch03");
+  args.insert(args.end(), {"--json", "--no-plot", "--out", out.path().string()});
+  const auto result = kit::test::run_process(binary, args);
+  INFO(result.err);
+  REQUIRE(result.exit_code == 0);
+  return json::parse(result.out);
+}
+
+const json& default_run() {
+  static const json summary = run_chapter({});
+  return summary;
+}
+}  // namespace
+
+TEST_CASE("chapter 3: midpoint RK2 reproduces free fall to 1e-12 relative after 1e4 steps; Euler does not") {
+  const json& f = default_run()["free_fall"];
+  CHECK(f["steps"] == 10'000);
+  CHECK(double(f["midpoint_relative_error"]) <= 1e-12);
+  CHECK(double(f["euler_relative_error"]) > 1e-6);
+}
+
+TEST_CASE("chapter 3: fitted orders are within 0.1 of 1, 1, 1, 2 and 4, on two springs") {
+  const json damped = run_chapter({"--damping", "3", "--mass", "2", "--stiffness", "50"});
+  for (const json* s : {&default_run(), &damped}) {
+    for (const auto& [scheme, expected] : std::map<std::string, double>{
+             {"explicit_euler", 1}, {"implicit_euler", 1}, {"symplectic_euler", 1}, {"midpoint", 2}, {"rk4", 4}}) {
+      INFO(scheme);
+      CHECK(double((*s)["orders"][scheme]["expected"]) == expected);
+      CHECK(double((*s)["orders"][scheme]["fitted"]) == Approx(expected).margin(0.1));
+      CHECK(int((*s)["orders"][scheme]["points"]) >= 3);
+    }
+  }
+}
+
+TEST_CASE("chapter 3: over 1000 periods symplectic Euler's energy error stays below ωΔt/2, explicit Euler's explodes") {
+  const json& e = default_run()["energy"];
+  CHECK(double(e["symplectic_euler"]["max_drift"]) <= (2 + 0.1) / (2 - 0.1) - 1);
+  CHECK(double(e["explicit_euler"]["max_drift"]) > 1e100);
+  CHECK(double(e["implicit_euler"]["final_ratio"]) < 1e-10);
+}
+
+TEST_CASE("chapter 3: the cost table's counts follow the orders: RK4 needs the fewest evaluations") {
+  const json& n = default_run()["evaluations_needed"];
+  for (const char* tolerance : {"1e-03", "1e-06", "1e-09"}) {
+    INFO(tolerance);
+    REQUIRE(n["rk4"][tolerance]["reachable"] == true);
+    CHECK(n["rk4"][tolerance]["extrapolated"] == false);
+    for (const char* other : {"explicit_euler", "symplectic_euler", "midpoint"})
+      CHECK(double(n["rk4"][tolerance]["evaluations"]) < double(n[other][tolerance]["evaluations"]));
+  }
+  // First order cannot reach 1e-9 m before round-off does (chapter 1): reported, not faked.
+  CHECK(n["explicit_euler"]["1e-09"]["reachable"] == false);
+  // Measured counts are whole numbers of steps times evaluations per step (2 for midpoint).
+  CHECK(long(n["midpoint"]["1e-03"]["evaluations"]) % 2 == 0);
+}
+
+TEST_CASE("chapter 3 writes its three figures, with no gnuplot warning") {
+  kit::test::TempDir out("ch03-figures");
+  const auto result = kit::test::run_process(binary, {"--quiet", "--out", out.path().string()});
+  REQUIRE(result.exit_code == 0);
+  CHECK(result.err.empty());
+  CHECK(kit::test::files_under(out.path()).size() == 12);
+}
+
+TEST_CASE("chapter 3 answers bad input with exit 2, a message naming the flag, and no file") {
+  kit::test::expect_usage_errors(binary, {{{"--mass", "-1"}, "--mass"}, {{"--t-end", "0"}, "--t-end"},
+                                          {{"--stiffness", "nan"}, "--stiffness"}, {{"--periods", "0"}, "--periods"},
+                                          {{"--free-fall-steps", "1.5"}, "--free-fall-steps"}, {{"--bogus"}, "--bogus"}});
+}
