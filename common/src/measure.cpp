@@ -1,5 +1,6 @@
 #include <kit/measure.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -53,6 +54,21 @@ std::size_t argmin(std::span<const double> values) {
   }
   if (best == values.size()) throw std::invalid_argument("argmin of no finite value");
   return best;
+}
+
+double cost_to_reach(std::span<const double> cost, std::span<const double> error, double target) {
+  std::vector<std::size_t> order(cost.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t i = order[k];
+    if (!(error[i] <= target)) continue;
+    if (k == 0) return cost[i];  // already below target at the cheapest run
+    const std::size_t j = order[k - 1];
+    const double s = std::log(error[j] / target) / std::log(error[j] / error[i]);
+    return std::exp(std::log(cost[j]) + s * std::log(cost[i] / cost[j]));
+  }
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 bool agrees(double measured, double predicted, double rel, double abs) {

@@ -100,6 +100,28 @@ void GslSolver::advance(double& t, double* u, double t1) {
                                 gsl_strerror(status)));
 }
 
+GslStepResult gsl_single_step(const GslSolver::Rhs& f, std::size_t dim, GslStepper stepper, double t,
+                              const Eigen::VectorXd& y, double h) {
+  gsl_set_error_handler_off();
+  struct Context {
+    const GslSolver::Rhs* f;
+  } context{&f};
+  gsl_odeiv2_system system{[](double time, const double u[], double dudt[], void* p) -> int {
+                             (*static_cast<Context*>(p)->f)(time, u, dudt);
+                             return GSL_SUCCESS;
+                           },
+                           nullptr, dim, &context};
+  gsl_odeiv2_step* step = gsl_odeiv2_step_alloc(step_type(stepper), dim);
+  if (!step) throw SolverError("GSL could not allocate a stepper");
+  GslStepResult out{y, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(dim))};
+  Eigen::VectorXd k1(static_cast<Eigen::Index>(dim));
+  f(t, y.data(), k1.data());
+  const int status = gsl_odeiv2_step_apply(step, t, h, out.y.data(), out.error.data(), k1.data(), nullptr, &system);
+  gsl_odeiv2_step_free(step);
+  if (status != GSL_SUCCESS) throw SolverError(fmt::format("GSL {} step failed: {}", name(stepper), gsl_strerror(status)));
+  return out;
+}
+
 Stats GslSolver::stats() const {
   Stats s;
   s.rhs_evals = impl_->rhs_evals;

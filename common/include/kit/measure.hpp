@@ -23,6 +23,11 @@ std::vector<long> geometric_counts(long lo, long hi, int per_decade);
 /// Index of the smallest finite value (the first one on ties).
 std::size_t argmin(std::span<const double> values);
 
+/// The cost at which a work-precision curve first reaches `target` error: log-log interpolation
+/// between the two points that bracket it, taken in order of increasing cost. NaN when the
+/// curve never gets that low. `cost` and `error` have one entry per run.
+double cost_to_reach(std::span<const double> cost, std::span<const double> error, double target);
+
 /// Errors reached over a range of time steps: one curve of a convergence or round-off plot.
 struct Sweep {
   std::vector<double> dt;     ///< time steps [s]

@@ -53,6 +53,25 @@ class GslSolver {
   std::unique_ptr<Impl> impl_;
 };
 
+/// One step of a GSL stepper, as gsl_odeiv2_step_apply computes it with k1 = f(t, y) given.
+struct GslStepResult {
+  Eigen::VectorXd y;      ///< y_{n+1}
+  Eigen::VectorXd error;  ///< GSL's error estimate
+};
+GslStepResult gsl_single_step(const GslSolver::Rhs& f, std::size_t dim, GslStepper stepper, double t,
+                              const Eigen::VectorXd& y, double h);
+
+/// The same on fixed-size states.
+template <class System, int N>
+GslStepResult gsl_single_step(const System& f, GslStepper stepper, double t, const Vec<N>& y, double h) {
+  return gsl_single_step(
+      [&f](double time, const double* u, double* dudt) {
+        Eigen::Map<Vec<N>> derivative(dudt);
+        derivative = f(time, Eigen::Map<const Vec<N>>(u));
+      },
+      static_cast<std::size_t>(N), stepper, t, Eigen::VectorXd(y), h);
+}
+
 /// The reference solution of u' = f(t, u), u(t0) = u0, sampled at each of `times`
 /// (ascending, ≥ t0). f is any callable f(t, u) → u' on fixed-size states.
 template <class System, int N>

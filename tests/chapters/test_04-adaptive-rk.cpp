@@ -1,0 +1,126 @@
+// Chapter 4 end to end: the tableau checks, Hairer's counts, the peers' counts, the
+// work-precision comparison, the step-doubling trap, stiffness, figures and bad input.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <kit/measure.hpp>
+
+#include "process.hpp"
+
+using nlohmann::json;
+
+namespace {
+const std::string binary = KIT_CHAPTER_BINARY;
+
+const json& default_run() {
+  static const json summary = [] {
+    kit::test::TempDir out("ch04");
+    const auto result = kit::test::run_process(binary, {"--json", "--no-plot", "--out", out.path().string()});
+    INFO(result.err);
+    REQUIRE(result.exit_code == 0);
+    return json::parse(result.out);
+  }();
+  return summary;
+}
+
+// Evaluations a method needs to reach `error`, from its work-precision points. A method that
+// never gets there within the sweep needs more than the most it spent trying.
+double evaluations_to_reach(const json& points, double error) {
+  std::vector<double> cost, err;
+  for (const auto& p : points) cost.push_back(p["evaluations"]), err.push_back(p["error"]);
+  const double reached = kit::cost_to_reach(cost, err, error);
+  return std::isnan(reached) ? *std::max_element(cost.begin(), cost.end()) : reached;
+}
+
+const json& at_tolerance(const json& points, double tolerance) {
+  for (const auto& p : points)
+    if (std::abs(double(p["tolerance"]) / tolerance - 1) < 1e-9) return p;
+  throw std::runtime_error("no point at that tolerance");
+}
+}  // namespace
+
+TEST_CASE("chapter 4 checks the tableaus: Cash–Karp and DOPRI5 5(4), BS 3(2), the lecture's misprint 2 (1 autonomous)") {
+  std::map<std::string, std::array<int, 3>> expected{{"Cash-Karp 5(4)", {5, 4, 5}}, {"Dormand-Prince 5(4)", {5, 4, 5}},
+                                                     {"Bogacki-Shampine 3(2)", {3, 2, 3}},
+                                                     {"the lecture's tableau, as printed (-575/13824)", {2, 2, 1}}};
+  for (const auto& t : default_run()["tableaus"]) {
+    const auto& e = expected.at(std::string(t["name"]));
+    CHECK(t["order"] == e[0]);
+    CHECK(t["embedded_order"] == e[1]);
+    CHECK(t["order_autonomous"] == e[2]);
+  }
+}
+
+TEST_CASE("chapter 4's DOPRI5 takes Hairer's counts on Arenstorf: 985, 2161, 5047 evaluations") {
+  const json& wp = default_run()["work_precision"];
+  CHECK(at_tolerance(wp["DOPRI5 (kit)"], 1e-6)["evaluations"] == 985);
+  CHECK(at_tolerance(wp["DOPRI5 (kit)"], 1e-8)["evaluations"] == 2161);
+  CHECK(at_tolerance(wp["DOPRI5 (kit)"], 1e-10)["evaluations"] == 5047);
+  CHECK(at_tolerance(wp["DOPRI5 (kit)"], 1e-6)["rejected"] == 23);
+  const json& d = default_run()["detail"];
+  CHECK(d["rhs_evals"] == 985);
+  CHECK(d["accepted"] == 141);
+  CHECK(d["rejected"] == 23);
+  // The peers, run in the same process, spend what they are known to spend.
+  CHECK(at_tolerance(wp["GSL rkck"], 1e-8)["evaluations"] == 2383);
+  CHECK(at_tolerance(wp["GSL rkf45"], 1e-8)["evaluations"] == 2611);
+  CHECK(at_tolerance(wp["GSL rk8pd"], 1e-8)["evaluations"] == 2185);
+  CHECK(at_tolerance(wp["Boost.Odeint dopri5"], 1e-8)["evaluations"] == 2491);
+}
+
+TEST_CASE("chapter 4's DOPRI5 reaches every error from 1e-3 to 1e-7 with fewer evaluations than GSL rkck, rkf45 and Boost dopri5") {
+  const json& wp = default_run()["work_precision"];
+  for (double error : {1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 3e-7, 1e-7}) {
+    const double kit_cost = evaluations_to_reach(wp["DOPRI5 (kit)"], error);
+    REQUIRE(std::isfinite(kit_cost));
+    for (const char* peer : {"GSL rkck", "GSL rkf45", "Boost.Odeint dopri5"}) {
+      INFO("error " << error << ": kit " << kit_cost << ", " << peer << " " << evaluations_to_reach(wp[peer], error));
+      CHECK(kit_cost < evaluations_to_reach(wp[peer], error));
+    }
+  }
+}
+
+TEST_CASE("chapter 4: the lecture's step doubling with E_max/E_min = 2.5 < 4 is reported trapped; guarded, it finishes") {
+  const json& sd = default_run()["step_doubling"];
+  CHECK(sd["lecture"]["status"] == "trapped");
+  CHECK_THAT(std::string(sd["lecture"]["message"]), Catch::Contains("retries"));
+  CHECK(sd["guarded"]["status"] == "finished");
+  CHECK(long(sd["guarded"]["evaluations"]) % 3 == 0);  // three Euler steps per trial
+}
+
+TEST_CASE("chapter 4: on stiff Van der Pol (μ = 100) DOPRI5 finishes, with the step held near the stability limit") {
+  const json& v = default_run()["van_der_pol"];
+  CHECK(v["status"] == "finished");
+  CHECK(long(v["accepted"]) > 10'000);
+  CHECK(double(v["median_step"]) < 0.05);  // against ~1 where accuracy alone would allow it
+  CHECK(double(v["median_h_lambda"]) == Approx(3.31).epsilon(0.15));  // on DOPRI5's real-axis stability boundary
+}
+
+TEST_CASE("chapter 4 on Kepler: errors against the exact solution shrink with the tolerance") {
+  kit::test::TempDir out("ch04-kepler");
+  const auto result = kit::test::run_process(binary, {"--json", "--no-plot", "--problem", "kepler", "--eccentricity", "0.5", "--out", out.path().string()});
+  REQUIRE(result.exit_code == 0);
+  const json wp = json::parse(result.out)["work_precision"]["DOPRI5 (kit)"];
+  CHECK(double(at_tolerance(wp, 1e-10)["error"]) < 1e-7);
+  CHECK(double(at_tolerance(wp, 1e-10)["error"]) < double(at_tolerance(wp, 1e-6)["error"]));
+}
+
+TEST_CASE("chapter 4 writes its five figures, with no gnuplot warning") {
+  kit::test::TempDir out("ch04-figures");
+  const auto result = kit::test::run_process(binary, {"--quiet", "--out", out.path().string()});
+  REQUIRE(result.exit_code == 0);
+  CHECK(result.err.empty());
+  for (const char* name : {"orbit", "step-sizes", "work-precision", "work-precision-time", "van-der-pol"})
+    CHECK(std::filesystem::file_size(out.path() / (std::string(name) + ".png")) > 1000);
+}
+
+TEST_CASE("chapter 4 answers bad input with exit 2, a message naming the flag, and no file") {
+  kit::test::expect_usage_errors(binary, {{{"--rtol", "0"}, "--rtol"}, {{"--problem", "lorenz"}, "--problem"},
+                                          {{"--emin", "1e-3", "--emax", "1e-4"}, "--emin"}, {{"--mu", "-1"}, "--mu"},
+                                          {{"--eccentricity", "1"}, "--eccentricity"}, {{"--bogus"}, "--bogus"}});
+}

@@ -1,0 +1,123 @@
+// The production DOPRI5 (solutions/dopri5.hpp): Hairer's counts, closed forms, dense output,
+// and failures reported rather than accepted.
+#include <cmath>
+#include <limits>
+
+#include <catch2/catch.hpp>
+
+#include <kit/free_fall.hpp>
+#include <kit/spring.hpp>
+#include <kit/test_problems.hpp>
+
+#include "dopri5.hpp"
+#include "embedded_rk.hpp"
+#include "spring_system.hpp"
+
+TEST_CASE("DOPRI5 on Arenstorf reproduces Hairer's dopri5.f: evaluations, steps, rejections, errors") {
+  struct Expected { double tol; long evaluations, attempts, rejected; double error; };
+  for (const Expected& e : {Expected{1e-6, 985, 164, 23, 4.4e-2}, {1e-8, 2161, 360, 21, 7.8e-5}, {1e-10, 5047, 841, 0, 2.4e-6}}) {
+    kit::Dopri5Options o;
+    o.rtol = o.atol = e.tol, o.h0 = 1e-4;
+    const auto r = kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
+    INFO("tol = " << e.tol);
+    REQUIRE(r.status == kit::RunStatus::finished);
+    CHECK(r.stats.rhs_evals == e.evaluations);
+    CHECK(r.stats.steps + r.stats.rejected == e.attempts);
+    CHECK(r.stats.rejected == e.rejected);
+    CHECK((r.y - kit::Arenstorf::initial_state()).cwiseAbs().maxCoeff() == Approx(e.error).epsilon(0.05));
+  }
+}
+
+TEST_CASE("DOPRI5 costs 6 evaluations per attempted step (FSAL), plus 1 at the start") {
+  kit::Dopri5Options o;
+  o.h0 = 1e-3;
+  long calls = 0;
+  const auto counted = [&](double t, const kit::Vec4& y) { ++calls; return kit::Arenstorf{}(t, y); };
+  const auto r = kit::dopri5(counted, 0.0, kit::Arenstorf::initial_state(), 2.0, o);
+  CHECK(calls == r.stats.rhs_evals);
+  CHECK(calls == 1 + 6 * (r.stats.steps + r.stats.rejected));
+}
+
+TEST_CASE("the general embedded driver with the Dormand–Prince tableau takes exactly the production DOPRI5's steps") {
+  for (double tol : {1e-5, 1e-8}) {
+    kit::Dopri5Options o;
+    o.rtol = o.atol = tol, o.h0 = 1e-4;
+    const auto production = kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
+    const auto general = kit::embedded_run(kit::Arenstorf{}, kit::dormand_prince(), 0.0, kit::Arenstorf::initial_state(),
+                                           kit::Arenstorf::period, {tol, tol, 1e-4, 1'000'000});
+    CHECK(general.stats.rhs_evals == production.stats.rhs_evals);
+    CHECK(general.stats.rejected == production.stats.rejected);
+    // Same steps; stage sums rounded in another order, amplified by the orbit: far below tol.
+    CHECK((general.accepted.u.back() - production.y).cwiseAbs().maxCoeff() < 0.1 * tol);
+  }
+}
+
+TEST_CASE("DOPRI5 meets the requested tolerance against the closed forms of free fall and the spring") {
+  const kit::FreeFall fall;
+  kit::Dopri5Options o;
+  const auto falling = kit::dopri5(fall, 0.0, fall.initial_state(), 2.0, o);
+  CHECK(falling.y[0] == Approx(fall.position(2.0)).margin(1e-9));  // quadratic: exact up to round-off
+  kit::Spring spring;
+  spring.damping = 0.5;
+  const kit::Vec2 u0(1.5, 0.0);
+  for (double tol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+    o.rtol = o.atol = tol;
+    const auto r = kit::dopri5(kit::spring_system(spring), 0.0, u0, 3.0, o);
+    INFO("tol = " << tol);
+    CHECK(std::abs(r.y[0] - kit::spring_motion(spring, u0, 3.0)[0]) < 30 * tol);  // global error: a few tolerances over ~5 periods
+  }
+}
+
+TEST_CASE("DOPRI5's dense output follows the exact motion inside each step, to at least fifth order locally") {
+  kit::Spring spring;
+  const kit::Vec2 u0(1.5, 0.0);
+  const auto midpoint_error = [&](double h) {
+    kit::Dopri5Options o;
+    o.h0 = h, o.h_max = h, o.rtol = o.atol = 1.0;  // force steps of exactly h
+    double worst = 0;
+    kit::dopri5(kit::spring_system(spring), 0.0, u0, h, o,
+                [&](const kit::Dopri5Dense<2>& dense, const kit::Vec2&, double) {
+                  const double t = dense.t_old + 0.5 * dense.h;
+                  worst = std::abs(dense(t)[0] - kit::spring_motion(spring, u0, t)[0]);
+                },
+                [](double, double) {});
+    return worst;
+  };
+  CHECK(std::log2(midpoint_error(0.02) / midpoint_error(0.01)) >= 4.6);  // 6.0 on this linear problem
+  CHECK(midpoint_error(0.01) < 1e-8);
+}
+
+TEST_CASE("a NaN from the right-hand side makes DOPRI5 reject and shrink the step, then stop with a clear message") {
+  long nan_calls = 0;
+  const auto poisoned = [&](double t, const kit::Vec2& y) {
+    if (t > 0.5) ++nan_calls;
+    return kit::Vec2(y[1], t > 0.5 ? std::numeric_limits<double>::quiet_NaN() : -y[0]);
+  };
+  kit::Dopri5Options o;
+  const auto r = kit::dopri5(poisoned, 0.0, kit::Vec2(1, 0), 1.0, o);
+  CHECK(r.status == kit::RunStatus::step_too_small);
+  CHECK_THAT(r.message, Catch::Contains("NaN or Inf") && Catch::Contains("rejected"));
+  CHECK(r.stats.rejected > 10);                       // rejected and shrunk, again and again
+  CHECK(r.t <= 0.5 + 1e-12);                           // never stepped past the poison
+  CHECK(r.y.allFinite());                              // never accepted a NaN
+}
+
+TEST_CASE("an unreachable tolerance, a collapsing step and an exhausted step budget are reported, not hung on") {
+  kit::Dopri5Options o;
+  o.rtol = o.atol = 1e-20;
+  const auto tight = kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
+  CHECK(tight.status == kit::RunStatus::unreachable);
+  CHECK_THAT(tight.message, Catch::Contains("rtol = 1e-20") && Catch::Contains("10·ε"));
+  CHECK(tight.stats.rhs_evals == 0);
+  // y' = y² from y(0) = 1 blows up at t = 1: the step collapses there.
+  kit::Dopri5Options blow;
+  const auto singular = kit::dopri5([](double, const kit::Vec<1>& y) { return kit::Vec<1>(y[0] * y[0]); }, 0.0, kit::Vec<1>(1.0), 2.0, blow);
+  CHECK(singular.status == kit::RunStatus::step_too_small);
+  CHECK(singular.t == Approx(1.0).margin(1e-3));
+  CHECK_THAT(singular.message, Catch::Contains("step size too small"));
+  o.rtol = o.atol = 1e-8;
+  o.max_steps = 50;
+  const auto short_budget = kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
+  CHECK(short_budget.status == kit::RunStatus::too_many_steps);
+  CHECK(short_budget.stats.steps + short_budget.stats.rejected == 50);
+}
