@@ -8,10 +8,10 @@
 // a message, never an abort.
 //
 // Templated on a fixed-size state: no heap allocation per step, no std::function, one log and
-// one exp per step (no pow). On a 2-state oscillator a step costs about 1.8 times Boost.Odeint's
-// dopri5: the step-size factor err^(−α)·prev^β is on the critical path of every step (~22 ns of
+// one exp per step (no pow). On a 2-state oscillator a step costs about 1.5 times Boost.Odeint's
+// dopri5 (`./kit bench adaptive` measures it): the step-size factor err^(−α)·prev^β is on the critical path of every step (~22 ns of
 // log/exp latency), where Boost's controller skips its pow whenever 0.5 ≤ err ≤ 1 — and so does
-// not take Hairer's steps. `./kit bench adaptive` measures it.
+// not take Hairer's steps.
 #include <cmath>
 #include <limits>
 #include <type_traits>

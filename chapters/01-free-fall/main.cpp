@@ -82,6 +82,11 @@ int main(int argc, char** argv) {
     if (n == 0 || n > 1'000'000)
       throw kit::UsageError(fmt::format("--t-end {} / --dt {} = {:.6g} steps: expected a whole number in [1, 1e6]",
                                         t_end, dt, t_end / dt));
+    if (std::abs(fall.g) < 1e-3)
+      throw kit::UsageError(fmt::format("--g {}: |g| must be at least 1e-3 m/s^2, or the errors this chapter measures vanish in round-off", fall.g));
+    if (!(dt_min * 10 <= t_end) || t_end / dt_min > 2e9)
+      throw kit::UsageError(fmt::format("--t-end {} / --dt-min {} = {:.3g} steps for the round-off sweep: expected between 10 and 2e9 "
+                                        "(raise --dt-min or lower --t-end)", t_end, dt_min, t_end / dt_min));
     auto& out = app.text();
     auto& json = app.summary();
     const double g = std::abs(fall.g);

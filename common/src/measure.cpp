@@ -71,6 +71,13 @@ double cost_to_reach(std::span<const double> cost, std::span<const double> error
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+double Sweep::order() const {
+  std::vector<double> x, y;
+  for (std::size_t i = 0; i < dt.size(); ++i)
+    if (error[i] > 0 && dt[i] > 0) x.push_back(dt[i]), y.push_back(error[i]);
+  return x.size() < 2 ? std::numeric_limits<double>::quiet_NaN() : fit_loglog(x, y).slope;
+}
+
 bool agrees(double measured, double predicted, double rel, double abs) {
   return std::abs(measured - predicted) <= rel * std::abs(predicted) + abs;
 }

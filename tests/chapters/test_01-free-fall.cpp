@@ -118,7 +118,8 @@ TEST_CASE("chapter 1 answers bad input with exit 2, a message naming the flag, a
   kit::test::expect_usage_errors(binary, {{{"--dt", "-1"}, "--dt"}, {{"--dt", "nan"}, "--dt"}, {{"--t-end", "0"}, "--t-end"},
                                           {{"--bogus"}, "--bogus"}, {{"--dt", "0.3", "--t-end", "1"}, "--t-end"},
                                           {{"--g", "0"}, "--g"}, {{"--dt-min", "1"}, "--dt-min"}, {{"--x0", "inf"}, "--x0"},
-                                          {{"--format", "jpg"}, "--format"}});
+                                          {{"--format", "jpg"}, "--format"}, {{"--g", "1e-300"}, "--g"},
+                                          {{"--dt", "10", "--t-end", "1e4"}, "--t-end"}, {{"--dt", "1e-4", "--t-end", "1e-4", "--dt-min", "1e-3"}, "--dt-min"}});
 }
 
 TEST_CASE("chapter 1 --help lists every physical flag with its unit") {

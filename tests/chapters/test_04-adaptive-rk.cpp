@@ -99,6 +99,21 @@ TEST_CASE("chapter 4: on stiff Van der Pol (μ = 100) DOPRI5 finishes, with the 
   CHECK(long(v["accepted"]) > 10'000);
   CHECK(double(v["median_step"]) < 0.05);  // against ~1 where accuracy alone would allow it
   CHECK(double(v["median_h_lambda"]) == Approx(3.31).epsilon(0.15));  // on DOPRI5's real-axis stability boundary
+  CHECK(v["stability_bound"] == true);
+}
+
+TEST_CASE("chapter 4: at μ = 10 the step is below the stability limit, and the chapter says accuracy decides") {
+  kit::test::TempDir out("ch04-mild");
+  const auto result = kit::test::run_process(binary, {"--json", "--no-plot", "--mu", "10", "--out", out.path().string()});
+  REQUIRE(result.exit_code == 0);
+  const json v = json::parse(result.out)["van_der_pol"];
+  CHECK(double(v["median_h_lambda"]) < 2.5);
+  CHECK(v["stability_bound"] == false);
+}
+
+TEST_CASE("chapter 4: GSL's 8th-order rk8pd needs fewer evaluations than the 5th-order DOPRI5 here, as its order predicts") {
+  const json& wp = default_run()["work_precision"];
+  for (double error : {1e-3, 1e-5, 1e-7}) CHECK(evaluations_to_reach(wp["GSL rk8pd"], error) < evaluations_to_reach(wp["DOPRI5 (kit)"], error));
 }
 
 TEST_CASE("chapter 4 on Kepler: errors against the exact solution shrink with the tolerance") {

@@ -37,8 +37,9 @@ struct Sweep {
     dt.push_back(step);
     error.push_back(err);
   }
-  /// Observed order: least-squares slope of log error against log Δt.
-  double order() const { return fit_loglog(dt, error).slope; }
+  /// Observed order: least-squares slope of log error against log Δt, over the points with a
+  /// positive error (an exact zero has no logarithm). NaN with fewer than two such points.
+  double order() const;
   /// Index of the smallest error: the best Δt before round-off wins.
   std::size_t best() const { return argmin(error); }
   /// {"dt": [...], "error": [...]} for the --json summary.
