@@ -1,17 +1,17 @@
 #pragma once
 // The production Dormand–Prince 5(4) integrator, following the structure of Hairer's dopri5.f
 // (Hairer, Nørsett & Wanner, Solving ODEs I, II.5 and II.6): FSAL stages, the RMS error norm
-// with sk = atol + rtol·max(|y_n|, |y_{n+1}|), the PI controller of ex 4.3, no growth right after
+// with sk = atol + rtol·max(|y_n|, |y_{n+1}|), the PI law of ex 4.3, no growth right after
 // a rejection, HINIT for the first step, Shampine's dense output, a step budget and a minimum
 // step. Two things it does that GSL and Boost.Odeint do not: a right-hand side that returns NaN
 // or Inf makes the step rejected and shrunk, never accepted; and every failure is a status with
 // a message, never an abort.
 //
-// Templated on a fixed-size state: no heap allocation per step, no std::function, one log and
-// one exp per step (no pow). On a 2-state oscillator a step costs about 1.5 times Boost.Odeint's
-// dopri5 (`./kit bench adaptive` measures it): the step-size factor err^(−α)·prev^β is on the critical path of every step (~22 ns of
-// log/exp latency), where Boost's controller skips its pow whenever 0.5 ≤ err ≤ 1 — and so does
-// not take Hairer's steps.
+// Templated on a fixed-size state: no heap allocation per step, no std::function. On a small
+// system a step is bound by latency, not flops: the next step cannot start before h_new is
+// known. Hence stages that add their newest slope last, an error norm with no sqrt, and a
+// step-size law without log or exp on that path (pi_step_control.hpp). `./kit bench adaptive`
+// times a step against Boost.Odeint's dopri5 and GSL's rkck in the same run.
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -21,7 +21,7 @@
 #include <kit/adaptive_run.hpp>
 #include <kit/state.hpp>
 
-#include "pi_controller.hpp"
+#include "pi_step_control.hpp"
 
 namespace kit {
 
@@ -100,7 +100,7 @@ Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end, 
   Dopri5Result<N> out;
   out.t = t0;
   out.y = y0;
-  PiController control = options.control;
+  PiStepControl control(options.control, int(y0.size()));
   const double h_max = options.h_max > 0 ? options.h_max : std::abs(t_end - t0);
   const double uround = std::numeric_limits<double>::epsilon();
   if (out.message = unreachable_tolerance(options.rtol, options.atol); !out.message.empty()) {
@@ -112,6 +112,7 @@ Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end, 
   double h = options.h0 > 0 ? std::min(options.h0, h_max) : dopri5_initial_step(f, t0, y0, k1, h_max, options, out.stats.rhs_evals);
   double& t = out.t;
   Vec<N>& y = out.y;
+  Vec<N> a21_k1 = a21 * k1;
   bool reject = false, last = false, poisoned = false;
   for (;;) {
     if (out.stats.steps + out.stats.rejected >= options.max_steps) {
@@ -133,38 +134,34 @@ Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end, 
       h = t_end - t;
       last = true;
     }
-    // Each stage adds its newest slope last, with h folded into the coefficients: the chain
-    // from one evaluation of f to the next is one multiply and one add (latency, not flops,
-    // bounds a step of a small system).
-    y1 = y + (h * a21) * k1;
+    // Latency, not flops, bounds a step of a small system, and h_new arrives last. So each
+    // stage sums the slopes it already has, scales them by h, and adds its newest slope last,
+    // with its own h·a: from one evaluation of f to the next is one multiply and one add.
+    y1 = y + h * a21_k1;  // a21·k1 was formed while h_new was still being computed
     k2 = f(t + c2 * h, y1);
     y1 = y + (h * a31) * k1 + (h * a32) * k2;
     k3 = f(t + c3 * h, y1);
-    y1 = y + (h * a41) * k1 + (h * a42) * k2 + (h * a43) * k3;
+    y1 = y + h * (a41 * k1 + a42 * k2) + (h * a43) * k3;
     k4 = f(t + c4 * h, y1);
-    y1 = y + (h * a51) * k1 + (h * a52) * k2 + (h * a53) * k3 + (h * a54) * k4;
+    y1 = y + h * (a51 * k1 + a52 * k2 + a53 * k3) + (h * a54) * k4;
     k5 = f(t + c5 * h, y1);
-    ysti = y + (h * a61) * k1 + (h * a62) * k2 + (h * a63) * k3 + (h * a64) * k4 + (h * a65) * k5;
+    ysti = y + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4) + (h * a65) * k5;
     const double t_new = t + h;
     k6 = f(t_new, ysti);
-    y1 = y + (h * a71) * k1 + (h * a73) * k3 + (h * a74) * k4 + (h * a75) * k5 + (h * a76) * k6;
+    y1 = y + h * (a71 * k1 + a73 * k3 + a74 * k4 + a75 * k5) + (h * a76) * k6;
     k7 = f(t_new, y1);  // FSAL: the next step's k1
     out.stats.rhs_evals += 6;
-    const Vec<N> error = (h * e1) * k1 + (h * e3) * k3 + (h * e4) * k4 + (h * e5) * k5 + (h * e6) * k6 + (h * e7) * k7;
+    const Vec<N> error = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6) + (h * e7) * k7;
     const Vec<N> sk = (options.atol + options.rtol * y.array().abs().max(y1.array().abs())).matrix();
-    double err = std::sqrt((error.array() / sk.array()).square().sum() / double(error.size()));
-    // A NaN compares false with everything: left alone, `err <= 1` would be false but the
-    // factor would be NaN. Treat a non-finite step as infinitely wrong: reject, shrink by 5.
-    if (!std::isfinite(err) || !k7.allFinite()) {
-      err = std::numeric_limits<double>::infinity();
-      poisoned = true;
-    }
-    const double factor = pi_step_factor(control, err);
-    if (err <= 1.0) {
-      remember_accepted(control, err);
+    const double sum_of_squares = (error.array() / sk.array()).square().sum();  // n·err², RMS norm
+    if (control.acceptable(sum_of_squares)) {
+      const double h_new = control.after_accepted(h, sum_of_squares, h_max, reject);
+      control.remember_accepted(sum_of_squares);
       ++out.stats.steps;
       Dopri5Dense<N> dense;
+      double err = 0;
       if constexpr (!std::is_same_v<std::decay_t<OnStep>, NoObserver>) {  // only when someone watches
+        err = std::sqrt(sum_of_squares / double(y.size()));
         dense.t_old = t;
         dense.h = h;
         dense.r1 = y;
@@ -174,21 +171,23 @@ Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end, 
         dense.r5 = h * (d1 * k1 + d3 * k3 + d4 * k4 + d5 * k5 + d6 * k6 + d7 * k7);
       }
       k1 = k7;
+      a21_k1 = a21 * k7;
       y = y1;
       t = last ? t_end : t_new;
       poisoned = false;
       on_step(dense, y, err);
       if (last) return out;
-      double h_new = std::min(h * factor, h_max);
-      if (reject) h_new = std::min(h_new, h);  // no growth right after a rejection
       reject = false;
       h = h_new;
     } else {
+      // NaN compares false with everything and lands here: a step with a NaN or Inf is
+      // never accepted; it is shrunk by the largest factor allowed.
+      poisoned = poisoned || !(sum_of_squares < std::numeric_limits<double>::infinity());
       on_reject(t, h);
       ++out.stats.rejected;
       reject = true;
       last = false;
-      h *= factor;
+      h = control.after_rejected(h, sum_of_squares);
     }
   }
 }

@@ -2,6 +2,7 @@
 // and failures reported rather than accepted.
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include <catch2/catch.hpp>
 
@@ -11,6 +12,7 @@
 
 #include "dopri5.hpp"
 #include "embedded_rk.hpp"
+#include "pi_step_control.hpp"
 #include "spring_system.hpp"
 
 TEST_CASE("DOPRI5 on Arenstorf reproduces Hairer's dopri5.f: evaluations, steps, rejections, errors") {
@@ -25,6 +27,35 @@ TEST_CASE("DOPRI5 on Arenstorf reproduces Hairer's dopri5.f: evaluations, steps,
     CHECK(r.stats.steps + r.stats.rejected == e.attempts);
     CHECK(r.stats.rejected == e.rejected);
     CHECK((r.y - kit::Arenstorf::initial_state()).cwiseAbs().maxCoeff() == Approx(e.error).epsilon(0.05));
+  }
+}
+
+TEST_CASE("DOPRI5's fast step-size law gives ex 4.3's factors to 1e-9, with its clamps and its memory") {
+  const int n = 4;  // components in the RMS norm: the control sees S = n·err²
+  std::mt19937_64 rng(20261122);
+  std::uniform_real_distribution<double> log10_err(-12.0, 0.0), log10_previous(-6.0, 0.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double err = std::pow(10.0, log10_err(rng)), previous = std::pow(10.0, log10_previous(rng)), h = 0.37;
+    kit::PiController law;
+    kit::remember_accepted(law, previous);
+    kit::PiStepControl fast(kit::PiController{}, n);
+    fast.remember_accepted(n * previous * previous);
+    INFO("err = " << err << ", previous = " << previous);
+    CHECK(fast.acceptable(n * err * err));
+    CHECK(fast.after_accepted(h, n * err * err, 1e9, false) == Approx(h * kit::pi_step_factor(law, err)).epsilon(1e-9));
+    CHECK(fast.after_accepted(h, n * err * err, 1e9, true) <= h);         // no growth right after a rejection
+    CHECK(fast.after_accepted(h, n * err * err, 0.5 * h, false) <= 0.5 * h);  // never above h_max
+  }
+  const kit::PiController law;
+  const kit::PiStepControl fast(law, n);
+  for (double err : {1.0001, 2.0, 10.0, 1e3, 1e12}) {
+    INFO("err = " << err);
+    CHECK_FALSE(fast.acceptable(n * err * err));
+    CHECK(fast.after_rejected(1.0, n * err * err) == Approx(kit::pi_step_factor(law, err)).epsilon(1e-9));
+  }
+  for (double poisoned : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    CHECK_FALSE(fast.acceptable(poisoned));
+    CHECK(fast.after_rejected(1.0, poisoned) == law.min_factor);
   }
 }
 
