@@ -18,15 +18,16 @@
 #include "dopri5.hpp"
 
 namespace {
-// Seconds of the least disturbed call of each run. The runs take turns, round after round, so
-// that all of them meet the same disturbances from the rest of the machine; the minimum over
-// the rounds is the cost of the code itself.
+// Seconds of the least disturbed call of each run. The runs take turns, round after round, in a
+// rotating order, so that all of them meet the same disturbances from the rest of the machine;
+// the minimum over the rounds is the cost of the code itself.
 template <std::size_t K>
 std::array<double, K> fastest_interleaved(const std::array<std::function<void()>, K>& runs, int rounds = 301) {
   std::array<double, K> best;
   best.fill(std::numeric_limits<double>::infinity());
   for (int round = 0; round < rounds; ++round)
-    for (std::size_t i = 0; i < K; ++i) {
+    for (std::size_t turn = 0; turn < K; ++turn) {
+      const std::size_t i = (turn + std::size_t(round)) % K;  // each run follows each other in turn
       const kit::Stopwatch clock;
       runs[i]();
       best[i] = std::min(best[i], clock.seconds());

@@ -8,7 +8,8 @@
 // slices of [1, 2). On a slice of width w = 1/256 the interpolation error is at most
 // |p(p−1)(p−2)|·(w/2)³/(9√3) relative: 9.2e-11 for DOPRI5's p = −0.085, 2.5e-10 for
 // |p| ≤ 0.2, 2.9e-9 for |p| ≤ 1 (tests/common/test_fast_power.cpp measures these).
-// Outside 2^±128 (and for 0, Inf or NaN) it falls back to std::pow.
+// Outside [2^−128, 2^128) (and for x ≤ 0, Inf or NaN) it falls back to std::pow. The exponent
+// must satisfy |p| ≤ 8, so that 2^(p·k) stays finite over the table.
 #include <array>
 #include <bit>
 #include <cmath>
@@ -18,6 +19,7 @@ namespace kit {
 
 class FastPower {
  public:
+  /// Throws std::invalid_argument unless |p| ≤ 8.
   explicit FastPower(double p);
 
   double exponent() const { return p_; }
