@@ -2,9 +2,9 @@
 
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
-#include <vector>
 
 namespace kit {
 
