@@ -4,6 +4,8 @@
 function(kit_add_chapter name)
   add_executable(${name} "${CMAKE_CURRENT_SOURCE_DIR}/${name}/main.cpp")
   target_link_libraries(${name} PRIVATE kit::common kit::methods)
+  # Glue that wires the selected methods to the chapters' models (spring_steppers.hpp).
+  target_include_directories(${name} PRIVATE "${PROJECT_SOURCE_DIR}/chapters/shared")
   target_compile_options(${name} PRIVATE ${KIT_WARNINGS})
   target_compile_definitions(${name} PRIVATE
     KIT_CHAPTER_NAME="${name}"

@@ -11,13 +11,15 @@
 
 #include <kit/butcher_tableau.hpp>
 #include <kit/cli.hpp>
+#include <kit/dopri5.hpp>
+#include <kit/embedded_run.hpp>
 #include <kit/peers.hpp>
 #include <kit/stopwatch.hpp>
 #include <kit/table.hpp>
 #include <kit/test_problems.hpp>
 
-#include "dopri5.hpp"
 #include "embedded_rk.hpp"
+#include "pi_controller.hpp"
 #include "explicit_euler.hpp"
 #include "midpoint.hpp"
 #include "rk4.hpp"
@@ -25,6 +27,9 @@
 
 namespace {
 using kit::Vec4;
+
+// The general driver runs the student's embedded step (ex 4.2) with the student's law (ex 4.3).
+const auto embedded_step = [](const auto&... args) { return kit::embedded_step(args...); };
 
 // One point of a work-precision curve: the error reached at T and what it cost.
 struct Work {
@@ -103,7 +108,7 @@ int main(int argc, char** argv) {
     options.rtol = rtol, options.atol = atol, options.h0 = h0;
     const auto& tableau = method == "cash-karp" ? kit::cash_karp() : kit::bogacki_shampine();
     const auto detail = method == "dopri5" ? kit::dopri5_run(f, 0.0, y0, t_end, options)
-                                           : kit::embedded_run(f, tableau, 0.0, y0, t_end, {rtol, atol, h0, 5'000'000});
+                                           : kit::embedded_run(embedded_step, kit::pi_step_factor, f, tableau, 0.0, y0, t_end, {rtol, atol, h0, 5'000'000});
     const std::string method_name = method == "dopri5" ? "DOPRI5" : tableau.name;
     const double detail_error = (detail.accepted.u.back() - reference).cwiseAbs().maxCoeff();
     out << fmt::format("\n{} on {} (rtol = {}, atol = {}, h0 = {}): {} evaluations, {} accepted and {} rejected steps, "
@@ -150,7 +155,7 @@ int main(int argc, char** argv) {
     for (const auto* tableau : {&kit::cash_karp(), &kit::bogacki_shampine()})
       add_curve(tableau->name + " (kit)", tableau == &kit::cash_karp() ? "lc rgb '#ff7f0e' pt 5" : "lc rgb '#bcbd22' pt 9",
                 std::vector<double>(tolerances.begin(), tableau == &kit::cash_karp() ? tolerances.end() : tolerances.begin() + 6),
-                [&](double tol) { return outcome(kit::embedded_run(f, *tableau, 0.0, y0, t_end, {tol, tol, h0, 5'000'000})); });
+                [&](double tol) { return outcome(kit::embedded_run(embedded_step, kit::pi_step_factor, f, *tableau, 0.0, y0, t_end, {tol, tol, h0, 5'000'000})); });
     for (auto [stepper, look] : {std::pair{kit::GslStepper::rkck, "lc rgb '#1f77b4' pt 4 dt 2"}, {kit::GslStepper::rkf45, "lc rgb '#17becf' pt 6 dt 2"},
                                  {kit::GslStepper::rk8pd, "lc rgb '#9467bd' pt 8 dt 2"}})
       add_curve(fmt::format("GSL {}", kit::name(stepper)), look, tolerances, [&](double tol) {

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <functional>
 
+#include <kit/dopri5_coefficients.hpp>
+
 namespace kit {
 namespace {
 
@@ -50,16 +52,16 @@ const ButcherTableau& dormand_prince() {
   static const ButcherTableau t = [] {
     ButcherTableau d;
     d.name = "Dormand-Prince 5(4)";
-    d.c = {0, q(1, 5), q(3, 10), q(4, 5), q(8, 9), 1, 1};
-    d.a = {{0, 0, 0, 0, 0, 0, 0},
-           {q(1, 5), 0, 0, 0, 0, 0, 0},
-           {q(3, 40), q(9, 40), 0, 0, 0, 0, 0},
-           {q(44, 45), q(-56, 15), q(32, 9), 0, 0, 0, 0},
-           {q(19372, 6561), q(-25360, 2187), q(64448, 6561), q(-212, 729), 0, 0, 0},
-           {q(9017, 3168), q(-355, 33), q(46732, 5247), q(49, 176), q(-5103, 18656), 0, 0},
-           {q(35, 384), 0, q(500, 1113), q(125, 192), q(-2187, 6784), q(11, 84), 0}};
-    d.b = {q(35, 384), 0, q(500, 1113), q(125, 192), q(-2187, 6784), q(11, 84), 0};
-    d.b_hat = {q(5179, 57600), 0, q(7571, 16695), q(393, 640), q(-92097, 339200), q(187, 2100), q(1, 40)};
+    // From the one source of the DOPRI5 fractions, the same the production integrator rounds.
+    namespace F = dopri5_fraction;
+    const auto exact = [](F::Fraction x) { return x.to_long_double(); };
+    for (int i = 0; i < 7; ++i) {
+      d.c.push_back(exact(F::c[i]));
+      d.a.emplace_back();
+      for (int j = 0; j < 7; ++j) d.a.back().push_back(exact(F::a[i][j]));
+      d.b.push_back(exact(F::b[i]));
+      d.b_hat.push_back(exact(F::b_hat[i]));
+    }
     d.order = 5;
     d.embedded_order = 4;
     d.fsal = true;

@@ -9,13 +9,12 @@
 
 #include <fmt/format.h>
 
+#include <kit/dopri5.hpp>
 #include <kit/measure.hpp>
 #include <kit/peers.hpp>
 #include <kit/stopwatch.hpp>
 #include <kit/table.hpp>
 #include <kit/test_problems.hpp>
-
-#include "dopri5.hpp"
 
 namespace {
 // Seconds of the least disturbed call of each run. The runs take turns, round after round, in a

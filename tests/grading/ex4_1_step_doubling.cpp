@@ -4,13 +4,13 @@
 #include <catch2/catch.hpp>
 
 #include "cases.hpp"
-#include "explicit_euler.hpp"
 #include "step_doubling.hpp"
 
 namespace {
 using V = kit::Vec<1>;
-const auto decay = [](double, const V& y) { return V(-y[0]); };  // y' = −y, y(t) = e^{−t}
-const auto euler = [](double t, const V& y, double dt) { return kit::explicit_euler_step(decay, t, y, dt); };
+// y' = −y, y(t) = e^{−t}, stepped by explicit Euler written out here: a grade of ex 4.1 never
+// depends on the student's ex 1.1.
+const auto euler = [](double, const V& y, double dt) { return V(y[0] - dt * y[0]); };
 }  // namespace
 
 TEST_CASE("ex 4.1: guarded step doubling reaches t_end, keeps every accepted e below E_max, and lands on t_end",

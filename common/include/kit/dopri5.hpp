@@ -1,7 +1,7 @@
 #pragma once
 // The production Dormand–Prince 5(4) integrator, following the structure of Hairer's dopri5.f
 // (Hairer, Nørsett & Wanner, Solving ODEs I, II.5 and II.6): FSAL stages, the RMS error norm
-// with sk = atol + rtol·max(|y_n|, |y_{n+1}|), the PI law of ex 4.3, no growth right after
+// with sk = atol + rtol·max(|y_n|, |y_{n+1}|), the PI law of Hairer's dopri5.f (pi_step_control.hpp), no growth right after
 // a rejection, HINIT for the first step, Shampine's dense output, a step budget and a minimum
 // step. Two things it does that GSL and Boost.Odeint do not: a right-hand side that returns NaN
 // or Inf makes the step rejected and shrunk, never accepted; and every failure is a status with
@@ -19,9 +19,9 @@
 #include <fmt/format.h>
 
 #include <kit/adaptive_run.hpp>
+#include <kit/dopri5_coefficients.hpp>
+#include <kit/pi_step_control.hpp>
 #include <kit/state.hpp>
-
-#include "pi_step_control.hpp"
 
 namespace kit {
 
@@ -61,16 +61,23 @@ struct Dopri5Result {
   std::string message;
 };
 
-namespace dopri5_coefficients {  // HNW table II.5.2, and the dense-output weights of dopri5.f
-inline constexpr double c2 = 0.2, c3 = 0.3, c4 = 0.8, c5 = 8.0 / 9.0;
-inline constexpr double a21 = 0.2, a31 = 3.0 / 40, a32 = 9.0 / 40, a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
-inline constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729;
-inline constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176, a65 = -5103.0 / 18656;
-inline constexpr double a71 = 35.0 / 384, a73 = 500.0 / 1113, a74 = 125.0 / 192, a75 = -2187.0 / 6784, a76 = 11.0 / 84;
-inline constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
-inline constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700410799.0,
-                        d4 = -10690763975.0 / 1880347072.0, d5 = 701980252875.0 / 199316789632.0,
-                        d6 = -1453857185.0 / 822651844.0, d7 = 69997945.0 / 29380423.0;
+namespace dopri5_coefficients {  // rounded once from the exact fractions of dopri5_coefficients.hpp
+namespace F = dopri5_fraction;
+inline constexpr double c2 = F::c[1].to_double(), c3 = F::c[2].to_double(), c4 = F::c[3].to_double(),
+                        c5 = F::c[4].to_double();
+inline constexpr double a21 = F::a[1][0].to_double();
+inline constexpr double a31 = F::a[2][0].to_double(), a32 = F::a[2][1].to_double();
+inline constexpr double a41 = F::a[3][0].to_double(), a42 = F::a[3][1].to_double(), a43 = F::a[3][2].to_double();
+inline constexpr double a51 = F::a[4][0].to_double(), a52 = F::a[4][1].to_double(), a53 = F::a[4][2].to_double(),
+                        a54 = F::a[4][3].to_double();
+inline constexpr double a61 = F::a[5][0].to_double(), a62 = F::a[5][1].to_double(), a63 = F::a[5][2].to_double(),
+                        a64 = F::a[5][3].to_double(), a65 = F::a[5][4].to_double();
+inline constexpr double a71 = F::a[6][0].to_double(), a73 = F::a[6][2].to_double(), a74 = F::a[6][3].to_double(),
+                        a75 = F::a[6][4].to_double(), a76 = F::a[6][5].to_double();
+inline constexpr double e1 = F::e(0).to_double(), e3 = F::e(2).to_double(), e4 = F::e(3).to_double(),
+                        e5 = F::e(4).to_double(), e6 = F::e(5).to_double(), e7 = F::e(6).to_double();
+inline constexpr double d1 = F::d[0].to_double(), d3 = F::d[2].to_double(), d4 = F::d[3].to_double(),
+                        d5 = F::d[4].to_double(), d6 = F::d[5].to_double(), d7 = F::d[6].to_double();
 }  // namespace dopri5_coefficients
 
 /// Hairer's HINIT: a first step from the sizes of y0, f0 and an estimate of the second

@@ -1,5 +1,5 @@
 #pragma once
-// The PI law of ex 4.3 (pi_controller.hpp), rewritten for the critical path of a DOPRI5 step.
+// The PI law of Hairer's dopri5.f (pi_law.hpp), in a form for the critical path of a DOPRI5 step.
 // On a small system a step is bound by latency: the next step's stages cannot start before
 // h_new is known, and h_new waits for the error norm and for err^(−α). So:
 //   - no sqrt: err² = Σ (e_i/sk_i)² / n is handed over as the sum S = n·err², and
@@ -8,16 +8,15 @@
 //   - the memory term safety·n^(α/2)·err_prev^β is computed once per accepted step, off the
 //     critical path, and h is folded into it and into the clamp bounds, so that after the
 //     power only one multiply, one max and one min remain.
-// The step sizes agree with pi_step_factor's to about 1e-10 relative (tested to 2e-10 in
-// tests/methods/test_dopri5.cpp), and DOPRI5 keeps dopri5.f's counts on Arenstorf at the three
+// The step sizes agree with dopri5.f's formula to about 1e-10 relative (tested to 2e-10 in
+// tests/common/test_dopri5.cpp), and DOPRI5 keeps dopri5.f's counts on Arenstorf at the three
 // published tolerances.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include <kit/fast_power.hpp>
-
-#include "pi_controller.hpp"
+#include <kit/pi_law.hpp>
 
 namespace kit {
 
