@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/cli.hpp>
+#include <kit/chapter_app.hpp>
 #include <kit/fixed_steps.hpp>
 #include <kit/free_fall.hpp>
 #include <kit/measure.hpp>

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/cli.hpp>
+#include <kit/chapter_app.hpp>
 #include <kit/fixed_steps.hpp>
 #include <kit/reference_solver.hpp>
 #include <kit/spring.hpp>

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include <kit/butcher_tableau.hpp>
-#include <kit/cli.hpp>
+#include <kit/chapter_app.hpp>
 #include <kit/dopri5.hpp>
 #include <kit/embedded_run.hpp>
 #include <kit/peers.hpp>

@@ -1,5 +1,7 @@
 #include <kit/scheme.hpp>
 
+#include <kit/look.hpp>
+
 namespace kit {
 
 const char* name(Scheme s) {
@@ -42,11 +44,11 @@ int evaluations_per_step(Scheme s) {
 
 const char* style(Scheme s) {
   switch (s) {
-    case Scheme::explicit_euler: return "lc rgb '#d62728'";
-    case Scheme::implicit_euler: return "lc rgb '#1f77b4'";
-    case Scheme::symplectic_euler: return "lc rgb '#ff7f0e'";
-    case Scheme::midpoint: return "lc rgb '#9467bd'";
-    case Scheme::rk4: return "lc rgb '#8c564b'";
+    case Scheme::explicit_euler: return look::explicit_euler.c_str();
+    case Scheme::implicit_euler: return look::implicit_euler.c_str();
+    case Scheme::symplectic_euler: return look::symplectic_euler.c_str();
+    case Scheme::midpoint: return look::midpoint.c_str();
+    case Scheme::rk4: return look::rk4.c_str();
   }
   return "";
 }

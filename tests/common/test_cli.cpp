@@ -4,7 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <kit/cli.hpp>
+#include <kit/chapter_app.hpp>
 
 #include "process.hpp"
 

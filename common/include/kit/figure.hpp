@@ -5,7 +5,10 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <kit/look.hpp>
 
 namespace kit {
 
@@ -25,7 +28,9 @@ struct Panel {
   std::string ylabel;
   bool logx = false;
   bool logy = false;
-  std::string key = "top right";  ///< gnuplot `set key` placement
+  /// gnuplot `set key` placement. The default, outside to the right, never hides data; inside
+  /// placements ("bottom right") suit panels whose corner is known to be empty.
+  std::string key = "outside right";
   std::vector<Series> series;
   std::vector<std::string> commands;  ///< extra gnuplot commands: ranges, labels, arrows
   /// Where the panel sits, as fractions of the canvas (x, y, width, height); unset = stacked.
@@ -35,6 +40,18 @@ struct Panel {
   Series& line(std::string title, std::vector<double> x, std::vector<double> y, std::string style = "");
   Series& points(std::string title, std::vector<double> x, std::vector<double> y, std::string style = "");
 };
+
+/// n + 1 samples (t_i, f(t_i)) of a smooth curve on [t0, t1], t_i evenly spaced, for the exact
+/// solutions drawn under the methods' points.
+template <class F>
+std::pair<std::vector<double>, std::vector<double>> sample(F&& f, double t0, double t1, int n = 200) {
+  std::vector<double> t, y;
+  for (int i = 0; i <= n; ++i) {
+    t.push_back(t0 + (t1 - t0) * i / n);
+    y.push_back(f(t.back()));
+  }
+  return {std::move(t), std::move(y)};
+}
 
 struct Figure {
   std::string name;   ///< file stem: name.dat, name.gp, name.pdf, name.png, name.svg
@@ -51,18 +68,6 @@ struct Figure {
   Figure(std::string name, std::string title) : name(std::move(name)), title(std::move(title)) {}
   Panel& panel(std::string xlabel, std::string ylabel, std::string panel_title = "");
 };
-
-/// Colours shared by every chapter, so a method looks the same everywhere. Callers add marks
-/// and widths ("pt 7 ps 0.8", "lw 3"); the default line width is 1.5.
-namespace look {
-inline const std::string exact = "lc rgb '#000000' lw 2";
-inline const std::string explicit_euler = "lc rgb '#d62728'";
-inline const std::string implicit_euler = "lc rgb '#1f77b4'";
-inline const std::string reference = "lc rgb '#2ca02c'";
-inline const std::string prediction = "lc rgb '#555555' dt 2";
-inline const std::string single_precision = "lc rgb '#9467bd'";
-inline const std::string highlight = "lc rgb '#000000'";
-}  // namespace look
 
 struct FigureOptions {
   std::filesystem::path dir;                     ///< created when missing

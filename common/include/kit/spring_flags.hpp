@@ -1,6 +1,6 @@
 #pragma once
 // The spring's command-line flags, shared by the chapters that simulate it.
-#include <kit/cli.hpp>
+#include <kit/chapter_app.hpp>
 #include <kit/spring.hpp>
 
 namespace kit {

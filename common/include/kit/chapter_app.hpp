@@ -1,14 +1,13 @@
 #pragma once
-// Command-line conventions shared by every chapter binary (CLI11):
+// One chapter binary: its flags (CLI11), where its text, JSON summary and figures go, and how
+// it ends. The conventions every chapter shares:
 //  - physical parameters are flags with SI units in their help and a stated allowed range;
 //  - bad input is a usage error: the message names the flag, the value and the range, the
 //    exit code is 2 and nothing is written;
-//  - --json prints one summary object on stdout and nothing else.
+//  - --json prints one summary object on stdout and nothing else;
+//  - a diverging simulation is a reported result (exit 0, or 3 under --fail-on-divergence).
 #include <functional>
-#include <limits>
-#include <optional>
 #include <ostream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -16,38 +15,11 @@
 #include <nlohmann/json.hpp>
 
 #include <kit/figure.hpp>
+#include <kit/real_range.hpp>
+#include <kit/report.hpp>
+#include <kit/usage.hpp>
 
 namespace kit {
-
-namespace exit_code {
-inline constexpr int ok = 0;
-inline constexpr int failure = 1;    ///< a solver or I/O failure
-inline constexpr int usage = 2;      ///< bad flag, value or scene
-inline constexpr int diverged = 3;   ///< only with --fail-on-divergence
-}  // namespace exit_code
-
-/// Bad input found after parsing (a combination of flags, a scene key): exit code 2.
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-/// An interval of allowed real values. NaN and ±Inf are never allowed.
-struct RealRange {
-  double lo = -std::numeric_limits<double>::max();
-  double hi = std::numeric_limits<double>::max();
-  bool lo_open = false;
-  bool hi_open = false;
-  bool nonzero = false;  ///< additionally exclude 0
-
-  bool contains(double value) const;
-  /// "a finite number in (0, 10]", "any finite number", "a finite non-zero number".
-  std::string describe() const;
-};
-RealRange any_finite();
-RealRange nonzero_finite();
-RealRange positive(double hi = std::numeric_limits<double>::max());      ///< (0, hi]
-RealRange between(double lo, double hi);                                 ///< [lo, hi]
 
 /// The flags every chapter shares.
 struct CommonOptions {
@@ -81,6 +53,8 @@ class ChapterApp {
   std::ostream& text();
   /// The summary printed by --json. "chapter" and "parameters" are filled in already.
   nlohmann::json& summary() { return summary_; }
+  /// Text and JSON from one call (report.hpp): what chapters print their numbers through.
+  Report& report() { return report_; }
   /// Writes a figure under --out (data and script always; renders unless --no-plot) and
   /// lists its files in the summary.
   void figure(const Figure& figure);
@@ -98,6 +72,7 @@ class ChapterApp {
   nlohmann::json summary_;
   std::vector<std::function<void()>> record_parameters_;
   std::ostream null_{nullptr};
+  Report report_{null_, summary_};  // bound to text() once the flags are parsed
 };
 
 }  // namespace kit

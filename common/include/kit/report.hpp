@@ -1,0 +1,88 @@
+#pragma once
+// The report layer: every number a chapter prints comes from the call that also writes it to
+// the --json summary, so the text and the JSON cannot drift apart.
+//   report.say("reference", "GSL rk8pd: max |x - exact| = {max_error:.3g} m", {{"max_error", e}});
+//     prints the sentence and sets summary["reference"]["max_error"] = e;
+//   auto table = report.table("samples", {{"k", "k"}, {"t [s]", "t", "{:.4f}"}});
+//   table.row({k, t});  ... table.print();
+//     prints the table and appends {"k": k, "t": t} to summary["samples"] for every row.
+#include <initializer_list>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <kit/table.hpp>
+
+namespace kit {
+
+/// One reported value. A long stays a whole number in the JSON; std::monostate prints "-" and
+/// is stored as null (a count a peer does not report, say).
+using ReportValue = std::variant<std::monostate, bool, long, double, std::string>;
+
+/// A named value: `key` is its JSON key and its name in a sentence's {key:format} field.
+struct Field {
+  std::string key;
+  ReportValue value;
+};
+
+/// A column of a reported table.
+struct Column {
+  std::string header;          ///< printed header with unit, e.g. "Δt [s]"; empty: JSON only
+  std::string key;             ///< JSON key of the value in every row object
+  std::string format = "{}";   ///< fmt format of the printed cell: "{:.3e}", "{:.4f}"; "check" prints ✓/✗,
+                               ///< "yes/no" prints yes/no
+};
+
+/// The text of `value` as `format` prints it (see Column::format).
+std::string format_value(const ReportValue& value, const std::string& format);
+/// The JSON of `value`.
+nlohmann::json to_json(const ReportValue& value);
+
+class Report;
+
+/// A table being filled: print() shows it (unless the report is silent); every row is in the
+/// JSON already.
+class ReportTable {
+ public:
+  /// One row, a value per column, in the columns' order. `printed` = false keeps the row out of
+  /// the text (a thinned table) but not out of the JSON.
+  void row(std::vector<ReportValue> values, bool printed = true);
+  void print() const;
+
+ private:
+  friend class Report;
+  ReportTable(std::ostream& text, nlohmann::json& rows, std::vector<Column> columns);
+  std::ostream* text_;
+  nlohmann::json* rows_;
+  std::vector<Column> columns_;
+  Table table_;
+};
+
+class Report {
+ public:
+  /// Text goes to `text`; values go into `summary`.
+  Report(std::ostream& text, nlohmann::json& summary) : text_(&text), summary_(&summary) {}
+
+  /// Prints `sentence`, in which "{key}" or "{key:spec}" stands for a field's value (fmt
+  /// syntax), and stores every field under summary[section][key]. `section` is a JSON pointer
+  /// path without the leading slash ("" = top level, "reference", "roundoff/explicit_float").
+  void say(std::string_view section, std::string_view sentence, const std::vector<Field>& fields);
+  /// Stores fields without printing them (values the text shows in a figure or not at all).
+  void store(std::string_view section, const std::vector<Field>& fields);
+  /// Prints text that holds no number.
+  void print(std::string_view text) { *text_ << text; }
+  /// A table whose rows are printed and appended to summary[section] (an array of objects).
+  ReportTable table(std::string_view section, std::vector<Column> columns);
+  /// The JSON node at `section`, for what a row or a field cannot hold (arrays of a sweep).
+  nlohmann::json& json(std::string_view section);
+
+ private:
+  std::ostream* text_;
+  nlohmann::json* summary_;
+};
+
+}  // namespace kit

@@ -1,0 +1,100 @@
+#include <kit/report.hpp>
+
+#include <stdexcept>
+
+#include <fmt/args.h>
+#include <fmt/format.h>
+
+namespace kit {
+
+std::string format_value(const ReportValue& value, const std::string& format) {
+  if (std::holds_alternative<std::monostate>(value)) return "-";
+  if (const bool* b = std::get_if<bool>(&value)) {
+    if (format == "check") return *b ? "✓" : "✗";
+    return *b ? "yes" : "no";
+  }
+  return std::visit(
+      [&](const auto& v) -> std::string {
+        using V = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<V, std::monostate> || std::is_same_v<V, bool>) {
+          return {};
+        } else {
+          return fmt::format(fmt::runtime(format), v);
+        }
+      },
+      value);
+}
+
+nlohmann::json to_json(const ReportValue& value) {
+  return std::visit(
+      [](const auto& v) -> nlohmann::json {
+        using V = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<V, std::monostate>) {
+          return nullptr;
+        } else {
+          return v;
+        }
+      },
+      value);
+}
+
+ReportTable::ReportTable(std::ostream& text, nlohmann::json& rows, std::vector<Column> columns)
+    : text_(&text), rows_(&rows), columns_(std::move(columns)), table_([&] {
+        std::vector<std::string> headers;
+        for (const auto& c : columns_)
+          if (!c.header.empty()) headers.push_back(c.header);
+        return headers;
+      }()) {
+  if (!rows_->is_array()) *rows_ = nlohmann::json::array();
+}
+
+void ReportTable::row(std::vector<ReportValue> values, bool printed) {
+  if (values.size() != columns_.size())
+    throw std::invalid_argument(fmt::format("report row has {} values for {} columns", values.size(), columns_.size()));
+  nlohmann::json object = nlohmann::json::object();
+  std::vector<std::string> cells;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    object[columns_[i].key] = to_json(values[i]);
+    if (!columns_[i].header.empty()) cells.push_back(format_value(values[i], columns_[i].format));
+  }
+  rows_->push_back(std::move(object));
+  if (printed) table_.add_row(std::move(cells));
+}
+
+void ReportTable::print() const { table_.print(*text_); }
+
+nlohmann::json& Report::json(std::string_view section) {
+  if (section.empty()) return *summary_;
+  std::string path(1, '/');
+  path.append(section.data(), section.size());
+  return (*summary_)[nlohmann::json::json_pointer(path)];
+}
+
+void Report::store(std::string_view section, const std::vector<Field>& fields) {
+  nlohmann::json& node = json(section);
+  for (const auto& f : fields) node[f.key] = to_json(f.value);
+}
+
+void Report::say(std::string_view section, std::string_view sentence, const std::vector<Field>& fields) {
+  fmt::dynamic_format_arg_store<fmt::format_context> args;
+  for (const auto& f : fields) {
+    std::visit(
+        [&](const auto& v) {
+          using V = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<V, std::monostate>) {
+            args.push_back(fmt::arg(f.key.c_str(), std::string("-")));
+          } else {
+            args.push_back(fmt::arg(f.key.c_str(), v));
+          }
+        },
+        f.value);
+  }
+  *text_ << fmt::vformat(sentence, args);
+  store(section, fields);
+}
+
+ReportTable Report::table(std::string_view section, std::vector<Column> columns) {
+  return ReportTable(*text_, json(section), std::move(columns));
+}
+
+}  // namespace kit
