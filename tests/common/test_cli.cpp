@@ -15,6 +15,7 @@ struct Outcome {
   std::string err;
   bool body_ran;
   double dt;
+  nlohmann::json summary;
 };
 Outcome run_app(std::vector<std::string> args, const std::string& out_dir = "unused-out") {
   double dt = 0.1;
@@ -30,7 +31,7 @@ Outcome run_app(std::vector<std::string> args, const std::string& out_dir = "unu
   bool ran = false;
   const int code = app.run(int(argv.size()), argv.data(), [&] { ran = true; });
   std::cerr.rdbuf(old);
-  return {code, captured.str(), ran, dt};
+  return {code, captured.str(), ran, dt, app.summary()};
 }
 }  // namespace
 
@@ -70,10 +71,15 @@ TEST_CASE("an unknown flag or format is a usage error") {
 }
 
 TEST_CASE("good flags reach the body and the summary's parameters") {
-  const auto outcome = run_app({"--dt", "0.25", "--quiet", "--no-plot"});
+  const auto outcome = run_app({"--dt", "0.25", "--count", "7", "--quiet", "--no-plot"});
   CHECK(outcome.code == 0);
   CHECK(outcome.body_ran);
   CHECK(outcome.dt == 0.25);
+  CHECK(outcome.summary["chapter"] == "toy");
+  CHECK(outcome.summary["parameters"]["dt"].get<double>() == 0.25);  // as given on the command line
+  CHECK(outcome.summary["parameters"]["count"].get<long>() == 7);
+  // A flag left at its default is reported with its default value.
+  CHECK(run_app({"--quiet"}).summary["parameters"]["count"].get<long>() == 5);
 }
 
 TEST_CASE("a UsageError thrown by the body exits 2, any other failure exits 1") {

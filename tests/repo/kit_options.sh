@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# ./kit never ignores what it is told: global options are honoured before or after the command,
+# a command refuses arguments it does not take (exit 2), and `run` never needs LaTeX.
+set -uo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+failures=0
+check() {  # check DESCRIPTION EXPECTED ACTUAL
+  if [ "$2" = "$3" ]; then echo "ok: $1"; else echo "FAILED: $1: expected [$2], got [$3]"; failures=$((failures + 1)); fi
+}
+exit_of() { "$@" >/dev/null 2>&1; echo $?; }
+
+before=$(./kit --impl exercises build-dir)
+after=$(./kit build-dir --impl exercises)
+check "--impl before and after the command select the same build" "$before" "$after"
+check "--impl=DIR is the same as --impl DIR" "$before" "$(./kit build-dir --impl=exercises)"
+[ "$before" != "$(./kit build-dir)" ] || { echo "FAILED: --impl after the command was ignored"; failures=$((failures + 1)); }
+check "--preset after the command" "$(./kit --preset debug build-dir)" "$(./kit build-dir --preset debug)"
+
+check "build with an extra argument exits 2" 2 "$(exit_of ./kit build extra)"
+check "build --impl of a missing folder exits 2" 2 "$(exit_of ./kit build --impl /nonexistent/student)"
+message=$(./kit build --impl /nonexistent/student 2>&1 >/dev/null)
+[[ "$message" == *"--impl /nonexistent/student"* ]] || { echo "FAILED: message does not name the flag and value: $message"; failures=$((failures + 1)); }
+check "an unknown preset exits 2" 2 "$(exit_of ./kit build-dir --preset bogus)"
+check "--impl without a folder exits 2" 2 "$(exit_of ./kit run --impl)"
+check "grade refuses --impl (it takes folders)" 2 "$(exit_of ./kit grade --impl exercises solutions)"
+check "an unknown command exits 2" 2 "$(exit_of ./kit frobnicate)"
+check "exercises-check refuses arguments" 2 "$(exit_of ./kit exercises-check now)"
+
+check "run needs no LaTeX package" 0 "$(./kit deps --for run --list | grep -c -e texlive -e latexmk)"
+check "grade needs no LaTeX package" 0 "$(./kit deps --for grade --list | grep -c -e texlive -e latexmk)"
+[ "$(./kit deps --for slides --list | grep -c texlive)" -gt 0 ] || { echo "FAILED: slides must install texlive"; failures=$((failures + 1)); }
+check "ccache is never required" 0 "$(./kit deps --for test --list | grep -c ccache)"
+
+echo "$failures failed"
+exit $((failures > 0))
