@@ -45,8 +45,9 @@ class MarkerError(Exception):
     pass
 
 
-def transform(text, relpath):
-    """Returns (exercise text, [exercise ids]) for one solution file."""
+def transform(text, relpath, solved=frozenset()):
+    """Returns (exercise text, [exercise ids]) for one solution file. Regions whose id is in
+    `solved` keep their solution code (the isolation test builds such partly solved trees)."""
     out, ids, region = [], [], None
     for number, line in enumerate(text.splitlines(keepends=True), start=1):
         begin, end = BEGIN.match(line), END.match(line)
@@ -55,6 +56,9 @@ def transform(text, relpath):
                 region = begin
                 ids.append(begin["id"])
                 indent = begin["indent"]
+                if begin["id"] in solved:
+                    out.append(line)
+                    continue
                 out.append(f"{indent}// TODO(ex {begin['id']}): {begin['hint']}\n")
                 out.append(f'{indent}throw kit::NotImplemented("ex {begin["id"]}", "{relpath}");\n')
             elif end or "BEGIN SOLUTION" in line:
@@ -64,6 +68,8 @@ def transform(text, relpath):
         else:
             if begin or ("BEGIN SOLUTION" in line):
                 raise MarkerError(f"{relpath}:{number}: BEGIN SOLUTION inside another region")
+            if region["id"] in solved:
+                out.append(line)
             if end:
                 region = None
     if region is not None:
@@ -71,13 +77,24 @@ def transform(text, relpath):
     return "".join(out), ids
 
 
-def expected_tree(solutions):
+def expected_tree(solutions, solved=frozenset()):
+    """{relative path: text} of exercises/, with the regions in `solved` left solved."""
     files = {"README.md": README}
     for path in sorted(solutions.rglob("*")):
         if path.is_file() and path.name != "README.md":
             rel = path.relative_to(solutions).as_posix()
-            files[rel], _ = transform(path.read_text(encoding="utf-8"), rel)
+            files[rel], _ = transform(path.read_text(encoding="utf-8"), rel, solved)
     return files
+
+
+def regions(solutions):
+    """{exercise id: file} for every marked region, in file order."""
+    found = {}
+    for path in sorted(solutions.rglob("*.hpp")):
+        rel = path.relative_to(solutions).as_posix()
+        for exercise in transform(path.read_text(encoding="utf-8"), rel)[1]:
+            found.setdefault(exercise, rel)
+    return found
 
 
 def actual_tree(exercises):
