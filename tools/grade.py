@@ -1,162 +1,231 @@
 #!/usr/bin/env python3
-"""Score one graded build: read ctest's JUnit file and the build log, write grade.json,
-grade.md and grade.junit.xml, and print the table. Called by `./kit grade`;
-`grade.py summary REPORT.json...` prints the batch's one-line-per-folder summary.
+"""Grade student folders: `./kit grade` calls `grade.py batch`.
 
-An exercise scores its points when its test executable built and every test case in it
-passed. Anything else scores 0, with the reason: did not compile, failed (first failing
-check), crashed, or timed out.
+For each folder, in its own grade tree OUT/NAME/:
+  1. copy the exercise files named in points.json, and nothing else, into OUT/NAME/src/
+     (grading/submission.py); statically check them (grading/static_check.py);
+  2. configure and build the graded programs against that copy, inside the sandbox
+     (grading/sandbox.py), one program per exercise, `ninja -k 0` so a file that does not compile
+     costs only the exercises written in it;
+  3. run each graded program inside the sandbox, with a memory limit and a timeout, and read the
+     evidence it writes on a channel the grader opened (grading/evidence.py);
+  4. write grade.json, grade.md, grade.junit.xml; then class.csv and class.md for the batch
+     (grading/reports.py). Reports are written here, outside the sandbox, never by a test.
+
+`grade.py record-evidence BUILD_DIR` runs the reference (solutions/) graded programs of a build
+and writes tests/grading/expected_evidence.json: the test cases of each exercise and their
+assertion counts, which a submission's run must match.
 """
 import argparse
+import hashlib
 import json
+import os
 import pathlib
+import random
 import re
+import signal
+import subprocess
 import sys
-import xml.etree.ElementTree as ET
-from xml.sax.saxutils import escape
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from grading import build_log, evidence, reports, static_check, submission  # noqa: E402
+from grading.sandbox import BUILD_MEMORY, TEST_MEMORY, Sandbox, SandboxUnavailable  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+POINTS = ROOT / "tests" / "grading" / "points.json"
+EXPECTED = ROOT / "tests" / "grading" / "expected_evidence.json"
+SEED = "20261121"  # the same --rng-seed the CTest entries use
 
 
-def compile_errors(build_log):
-    """target name -> first compiler error line, from a `ninja -k 0` log."""
-    errors, current = {}, None
-    for line in build_log.splitlines():
-        failed = re.match(r"FAILED: .*?(grade_ex[\w]+)", line)
-        if failed:
-            current = failed.group(1)
-            continue
-        if current and current not in errors and re.search(r"\berror\b", line):
-            errors[current] = re.sub(r"^.*?/([^/]+:\d+:\d+: )", r"\1", line.strip())
-    return errors
+def target(ident):
+    return "grade_ex" + ident.replace(".", "_")
 
 
-def first_failure(output):
-    # The placeholder's own sentence says best what to do; Catch's compact reporter may put
-    # it after the INFO text, so look for it first.
-    placeholder = re.search(r"(ex \d+\.\d+ is not implemented yet[^'\n]*)", output)
-    if placeholder:
-        return placeholder.group(1)
-    for line in output.splitlines():
-        if "failed:" in line:
-            return re.sub(r"^.*?([\w.-]+:\d+): failed: ", r"\1: ", line.strip())[:400]
-    for line in output.splitlines():
-        if line.strip():
-            return line.strip()[:400]
-    return ""
+def run_limited(command, timeout, **kwargs):
+    """Runs `command` in its own session; on timeout kills the whole group. Returns
+    (returncode or None on timeout, stdout+stderr text)."""
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True,
+                               **kwargs)
+    try:
+        out, _ = process.communicate(timeout=timeout)
+        return process.returncode, out.decode("utf-8", errors="replace")
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        out, _ = process.communicate()
+        return None, out.decode("utf-8", errors="replace")
 
 
-def ctest_outcomes(ctest_log):
-    """test name -> ctest's verdict word (Passed, Failed, Timeout, Exception: SegFault, Not Run...).
-    ctest's JUnit file leaves timeouts and crashes unnamed; its log names them."""
-    outcomes = {}
-    for match in re.finditer(r"Test\s+#\d+: (\S+) \.*\s*(?:\*{3})?([A-Za-z][^\n]*?)\s+[\d.]+ sec", ctest_log):
-        outcomes[match.group(1)] = match.group(2).strip()
-    return outcomes
+def run_with_evidence(command, evidence_path, timeout, env=None):
+    """Runs a graded program with the evidence channel on a random descriptor number."""
+    fd_number = random.Random(str(evidence_path)).randrange(10, 200)
+    with open(evidence_path, "wb") as sink:
+        os.dup2(sink.fileno(), fd_number)
+        try:
+            environment = dict(env or os.environ, KIT_EVIDENCE_FD=str(fd_number))
+            return run_limited(command, timeout, pass_fds=(fd_number,), env=environment)
+        finally:
+            os.close(fd_number)
 
 
-def ctest_results(junit_path):
-    if not junit_path.exists():
-        return {}
-    results = {}
-    for case in ET.parse(junit_path).getroot().iter("testcase"):
-        out = case.findtext("system-out") or ""
-        results[case.get("name")] = {"status": case.get("status", ""), "time": float(case.get("time") or 0),
-                                     "failure": case.find("failure") is not None, "output": out}
-    return results
+def verdict(exercise, binary, run, expected, errors, findings):
+    """(status, message) for one exercise."""
+    ident = exercise["id"]
+    if not binary.exists():
+        if target(ident) in errors:
+            return "compile error", errors[target(ident)]
+        return "not run", "the test program was not built (see build.log)"
+    code, output, cases, end = run
+    if code is None:
+        return "timeout", "did not finish within the time limit: an endless loop?"
+    status, reason = evidence.judge(expected, cases, end)
+    signal_caught = re.search(r"(SIG[A-Z]+) - ([^'\n]*)", output)
+    if status == "fail" and signal_caught:  # Catch turns a fatal signal into a failed check
+        return "crashed", f"the test process died: {signal_caught.group(1)} ({signal_caught.group(2).strip()})"
+    if status == "fail":
+        return "fail", build_log.first_failure(output) or reason
+    if end is None and (code < 0 or code >= 128):
+        return "crashed", f"the test process died (exit {code}); {build_log.first_failure(output)}".rstrip("; ")
+    if status == "pass" and code != 0:
+        return "integrity", f"the test process exited with code {code} after passing every check"
+    if status == "pass":
+        own = [f for f in findings if f["severity"] == "integrity" and f["file"] == exercise["file"]]
+        if own:
+            return "integrity", f"static check: {own[0]['file']}:{own[0]['line']}: {own[0]['what']}"
+    return status, reason
 
 
-def grade(points, results, outcomes, build_log, configured):
-    errors = compile_errors(build_log)
+def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout):
+    tree = out / label
+    tree.mkdir(parents=True, exist_ok=True)
+    src, build = tree / "src", tree / "build"
+    allowed = submission.exercise_files(points)
+    copied, missing, ignored = submission.snapshot(folder, allowed, src)
+    kit_headers = static_check.kit_public_headers(ROOT)
+    findings = []
+    for name in copied:
+        findings += static_check.check((src / name).read_text(encoding="utf-8", errors="replace"), name,
+                                       kit_headers, set(allowed))
+    cache = build / "CMakeCache.txt"
+    configured = cache.exists() and f"KIT_IMPL:STRING={src}" in cache.read_text(encoding="utf-8", errors="replace") \
+        and (build / "build.ninja").exists()
+    log = ""
+    if not configured:
+        code, log = run_limited(sandbox.wrap(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja",
+                                              "-DCMAKE_BUILD_TYPE=Release", f"-DKIT_IMPL={src}", "-DKIT_GRADING_ONLY=ON"],
+                                             tree, True, BUILD_MEMORY), 600)
+        (tree / "configure.log").write_text(log, encoding="utf-8")
+        configured = code == 0
     rows = []
+    errors = {}
+    if configured:
+        _, log = run_limited(sandbox.wrap(["cmake", "--build", str(build), "-j", str(jobs), "--", "-k", "0"],
+                                          tree, True, BUILD_MEMORY), 3600)
+        (tree / "build.log").write_text(log, encoding="utf-8")
+        errors = build_log.compile_errors(log, allowed)
+    evidence_dir = tree / "evidence"
+    evidence_dir.mkdir(exist_ok=True)
     for exercise in points["exercises"]:
         ident = exercise["id"]
-        target = "grade_ex" + ident.replace(".", "_")
-        result = results.get(f"grade.ex{ident}")
-        verdict = outcomes.get(f"grade.ex{ident}", "")
+        binary = build / "tests" / target(ident)
         if not configured:
-            status, message = "error", "the folder could not be configured as KIT_IMPL (see configure.log)"
-        elif target in errors:
-            status, message = "compile error", errors[target]
-        elif result is None or result["status"] == "notrun":
-            status, message = "not run", "the test executable was not built (see build.log)"
-        elif result["status"] == "run" and not result["failure"]:
-            status, message = "pass", ""
+            status, message = "error", "the folder could not be configured (see configure.log)"
         else:
-            out = result["output"]
-            if verdict == "Timeout":
-                status, message = "timeout", "did not finish within the time limit: an endless loop?"
-            elif verdict.startswith("Exception") or "Child aborted" in verdict:
-                status, message = "crashed", f"the test process died ({verdict}); {first_failure(out)}".rstrip("; ")
-            else:
-                status, message = "fail", first_failure(out)
-        earned = exercise["points"] if status == "pass" else 0
-        rows.append({"id": ident, "chapter": exercise["chapter"], "title": exercise["title"],
-                     "file": exercise["file"], "points": earned, "max_points": exercise["points"],
+            run = (None, "", {}, None)
+            if binary.exists():
+                channel = evidence_dir / f"ex{ident}.txt"
+                command = sandbox.wrap([str(binary), "--reporter", "compact", "--rng-seed", SEED], tree, False, TEST_MEMORY)
+                code, output = run_with_evidence(command, channel, timeout)
+                (evidence_dir / f"ex{ident}.out").write_text(output, encoding="utf-8")
+                run = (code, output, *evidence.read(channel))
+            status, message = verdict(exercise, binary, run, expected.get(ident, {}), errors, findings)
+        if exercise["file"] in missing and status != "pass":
+            message = f"{exercise['file']} is missing from the folder; " + message
+        rows.append({"id": ident, "chapter": exercise["chapter"], "title": exercise["title"], "file": exercise["file"],
+                     "points": exercise["points"] if status == "pass" else 0, "max_points": exercise["points"],
                      "status": status, "message": message})
-    return rows
+    report = {"submission": label, "points": sum(r["points"] for r in rows),
+              "max_points": sum(r["max_points"] for r in rows), "sandboxed": sandbox.enabled,
+              "exercises": rows, "findings": findings, "ignored": ignored}
+    reports.write_submission(report, tree)
+    reports.print_table(report)
+    return tree / "grade.json"
 
 
-def write_outputs(rows, label, out_dir):
-    total = sum(r["points"] for r in rows)
-    maximum = sum(r["max_points"] for r in rows)
-    summary = {"submission": label, "folder": label, "points": total, "max_points": maximum, "exercises": rows}
-    out_dir.mkdir(parents=True, exist_ok=True)
-    (out_dir / "grade.json").write_text(json.dumps(summary, indent=2, ensure_ascii=False) + "\n", encoding="utf-8")
-    md = [f"# Grade: {label}", "", f"**{total} / {maximum} points**", "",
-          "| exercise | points | status | file | message |", "|---|---|---|---|---|"]
-    for r in rows:
-        msg = r["message"].replace("|", "\\|")
-        md.append(f"| ex {r['id']}: {r['title']} | {r['points']} / {r['max_points']} | {r['status']} | {r['file']} | {msg} |")
-    (out_dir / "grade.md").write_text("\n".join(md) + "\n", encoding="utf-8")
-    failures = sum(r["status"] != "pass" for r in rows)
-    xml = [f'<?xml version="1.0" encoding="UTF-8"?>',
-           f'<testsuite name="{escape(label)}" tests="{len(rows)}" failures="{failures}">']
-    for r in rows:
-        name = escape(f"ex {r['id']}: {r['title']} ({r['max_points']} points)", {'"': "&quot;"})
-        xml.append(f'  <testcase classname="{escape(r["chapter"])}" name="{name}">')
-        if r["status"] != "pass":
-            xml.append(f'    <failure message="{escape(r["status"], {chr(34): "&quot;"})}">{escape(r["message"])}</failure>')
-        xml.append("  </testcase>")
-    xml.append("</testsuite>")
-    (out_dir / "grade.junit.xml").write_text("\n".join(xml) + "\n", encoding="utf-8")
-    return total, maximum
+def labels_for(folders):
+    """A report name per folder: its base name, with a short hash of its path when two clash."""
+    names = [f.name or "submission" for f in folders]
+    return [n if names.count(n) == 1 else f"{n}-{hashlib.sha1(str(f).encode()).hexdigest()[:6]}"
+            for n, f in zip(names, folders)]
 
 
-def print_table(rows, label, total, maximum):
-    print(f"\n{label}: {total} / {maximum} points")
-    width = max(len(f"ex {r['id']} {r['title']}") for r in rows)
-    for r in rows:
-        name = f"ex {r['id']} {r['title']}"
-        print(f"  {name:<{width}}  {r['points']:>3} / {r['max_points']:<3} {r['status']:<13} {r['message']}")
+def batch(args):
+    points = json.loads(POINTS.read_text(encoding="utf-8"))
+    expected = evidence.load_expected(EXPECTED)
+    out = pathlib.Path(args.out).resolve()
+    folders = [pathlib.Path(f).resolve() for f in args.folders]
+    try:
+        sandbox = Sandbox(ROOT, hidden=[out, ROOT / "build", *folders], enabled=not args.no_sandbox)
+    except SandboxUnavailable as why:
+        print(f"grade: cannot sandbox the students' code: {why}.\n"
+              "Install bubblewrap, or pass --no-sandbox to grade without it (every report then says so).",
+              file=sys.stderr)
+        return 2
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for folder, label in zip(folders, labels_for(folders)):
+        print(f"grading {folder}", file=sys.stderr, flush=True)
+        paths.append(grade_one(folder, label, out, points, expected, sandbox, args.jobs, args.timeout))
+    loaded = reports.load_reports(paths)
+    reports.write_class(points, loaded, out)
+    print("\nBatch summary (points, submission, report):")
+    for path, report, problem in loaded:
+        if report is None:
+            print(f"  {'?':>4} / {'?':<4} {problem}: {path}")
+        else:
+            print(f"  {report['points']:>4} / {report['max_points']:<4} {report['submission']:<24} {path}")
+    print(f"Class reports: {out / 'class.csv'}, {out / 'class.md'}")
+    return 0
 
 
-def batch_summary(reports):
-    """One line per graded folder, for the end of a batch."""
-    print("\nBatch summary (points, folder, report):")
-    for report in reports:
-        g = json.loads(pathlib.Path(report).read_text(encoding="utf-8"))
-        print(f"  {g['points']:>4} / {g['max_points']:<4} {g['submission']:<24} {report}")
+def record_evidence(args):
+    """Runs the reference graded programs and writes their cases and assertion counts."""
+    points = json.loads(POINTS.read_text(encoding="utf-8"))
+    build = pathlib.Path(args.build).resolve()
+    recorded, problems = {}, []
+    for exercise in points["exercises"]:
+        ident = exercise["id"]
+        binary = build / "tests" / target(ident)
+        channel = build / f"evidence-ex{ident}.txt"
+        code, output = run_with_evidence([str(binary), "--reporter", "compact", "--rng-seed", SEED], channel, 300)
+        cases, end = evidence.read(channel)
+        if code != 0 or end is None or any(bad for _, bad in cases.values()):
+            problems.append(f"ex {ident}: the reference does not pass (exit {code}): {build_log.first_failure(output)}")
+        recorded[ident] = {name: passed for name, (passed, _) in cases.items()}
+    if problems:
+        print("\n".join(problems), file=sys.stderr)
+        return 1
+    text = json.dumps({"about": "Written by `./kit evidence` from the reference solutions: the test cases of each "
+                                "graded exercise and the assertions each runs. A submission passes an exercise only "
+                                "when its run shows exactly these.", **recorded}, indent=2, ensure_ascii=False) + "\n"
+    pathlib.Path(args.output).write_text(text, encoding="utf-8")
+    print(f"wrote {args.output}: {sum(len(c) for c in recorded.values())} test cases of {len(recorded)} exercises")
+    return 0
 
 
 def main():
-    if len(sys.argv) > 1 and sys.argv[1] == "summary":
-        batch_summary(sys.argv[2:])
-        return 0
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--points", required=True, type=pathlib.Path)
-    parser.add_argument("--junit", required=True, type=pathlib.Path)
-    parser.add_argument("--build-log", required=True, type=pathlib.Path)
-    parser.add_argument("--ctest-log", required=True, type=pathlib.Path)
-    parser.add_argument("--configured", choices=("yes", "no"), default="yes")
-    parser.add_argument("--label", required=True)
-    parser.add_argument("--out", required=True, type=pathlib.Path)
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    commands = parser.add_subparsers(dest="command", required=True)
+    b = commands.add_parser("batch", help="grade folders")
+    b.add_argument("--out", required=True)
+    b.add_argument("--jobs", type=int, default=2)
+    b.add_argument("--timeout", type=float, default=30.0, help="seconds per graded program")
+    b.add_argument("--no-sandbox", action="store_true")
+    b.add_argument("folders", nargs="+")
+    r = commands.add_parser("record-evidence", help="record the reference's cases and assertion counts")
+    r.add_argument("build")
+    r.add_argument("--output", default=str(EXPECTED))
     args = parser.parse_args()
-    points = json.loads(args.points.read_text(encoding="utf-8"))
-    build_log = args.build_log.read_text(encoding="utf-8", errors="replace") if args.build_log.exists() else ""
-    ctest_log = args.ctest_log.read_text(encoding="utf-8", errors="replace") if args.ctest_log.exists() else ""
-    rows = grade(points, ctest_results(args.junit), ctest_outcomes(ctest_log), build_log, args.configured == "yes")
-    total, maximum = write_outputs(rows, args.label, args.out)
-    print_table(rows, args.label, total, maximum)
-    return 0
+    return batch(args) if args.command == "batch" else record_evidence(args)
 
 
 if __name__ == "__main__":

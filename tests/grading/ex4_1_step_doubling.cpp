@@ -1,4 +1,5 @@
 // ex 4.1: the lecture's step-doubling controller, guarded (step_doubling.hpp).
+#include <algorithm>
 #include <cmath>
 
 #include <catch2/catch.hpp>
@@ -22,13 +23,17 @@ TEST_CASE("ex 4.1: guarded step doubling reaches t_end, keeps every accepted e b
   CHECK(run.accepted.t.back() == 3.0);
   CHECK(run.accepted.u.back()[0] == Approx(std::exp(-3.0)).epsilon(0.05));
   CHECK(run.stats.steps == long(run.step_sizes.size()));
-  // Recompute each accepted step's estimate: one Euler step of h against two of h/2.
+  // Recompute each accepted step's estimate: one Euler step of h against two of h/2. The
+  // largest is checked once, so the number of assertions does not depend on how many steps a
+  // correct controller takes (the grader expects a fixed count per case).
+  double largest = 0;
   for (std::size_t i = 0; i < run.step_sizes.size(); ++i) {
     const double h = run.step_sizes[i];
     const V y = run.accepted.u[i];
-    const double e = std::abs(euler(0, y, h)[0] - euler(0, euler(0, y, h / 2), h / 2)[0]);
-    CHECK(e <= options.e_max);
+    largest = std::max(largest, std::abs(euler(0, y, h)[0] - euler(0, euler(0, y, h / 2), h / 2)[0]));
   }
+  CHECK(run.stats.steps > 0);
+  CHECK(largest <= options.e_max);
 }
 
 TEST_CASE("ex 4.1: the step grows when the error is small and shrinks when it is large", "[grade][04-adaptive-rk][ex4.1]") {

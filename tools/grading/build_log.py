@@ -1,0 +1,36 @@
+"""What went wrong, from the build log and a test's output, in one line a student can act on."""
+import re
+
+
+def compile_errors(build_log, student_files):
+    """{target name: "file:line:col: error: …"} from a `ninja -k 0` log. The first error in a
+    student's own file is preferred: that is where the fix goes."""
+    errors, current, lines = {}, None, {}
+    for line in build_log.splitlines():
+        failed = re.match(r"FAILED: .*?(grade_ex[\w]+)", line)
+        if failed:
+            current = failed.group(1)
+            lines.setdefault(current, [])
+            continue
+        if current and re.search(r"\berror\b", line):
+            lines[current].append(line.strip())
+    for target, found in lines.items():
+        own = [l for l in found if any(re.search(rf"(^|/){re.escape(f)}:\d+", l) for f in student_files)]
+        chosen = (own or found or ["did not compile (see build.log)"])[0]
+        errors[target] = re.sub(r"^.*?/([^/]+:\d+:\d+: )", r"\1", chosen)[:400]
+    return errors
+
+
+def first_failure(output):
+    """The line that says best why a test failed: the placeholder's sentence, else Catch's first
+    'failed:' line, else the first line of output."""
+    placeholder = re.search(r"(ex \d+\.\d+ is not implemented yet[^'\n]*)", output)
+    if placeholder:
+        return placeholder.group(1)
+    for line in output.splitlines():
+        if "failed:" in line:
+            return re.sub(r"^.*?([\w.-]+:\d+): failed: ", r"\1: ", line.strip())[:400]
+    for line in output.splitlines():
+        if line.strip():
+            return line.strip()[:400]
+    return ""

@@ -1,0 +1,51 @@
+"""The evidence a verdict needs: what the graded test process wrote on the channel the grader
+set up (tests/support/catch_main.cpp writes it), against what the reference solution's run
+wrote (tests/grading/expected_evidence.json).
+
+An exercise passes only when every expected test case ended with no failed assertion and its
+expected number of passed assertions, no unexpected case ran, and the run reached its end.
+Anything less, with a process that still said "success", is an integrity failure."""
+import json
+import pathlib
+
+
+def read(path):
+    """{case name: (passed, failed)}, and the end record (passed, failed) or None."""
+    cases, end = {}, None
+    path = pathlib.Path(path)
+    if not path.exists():
+        return cases, end
+    for line in path.read_text(encoding="utf-8", errors="replace").splitlines():
+        parts = line.split("\t")
+        try:
+            if parts[0] == "case" and len(parts) == 4:
+                cases[parts[1]] = (int(parts[2]), int(parts[3]))
+            elif parts[0] == "end" and len(parts) == 3:
+                end = (int(parts[1]), int(parts[2]))
+        except ValueError:
+            continue
+    return cases, end
+
+
+def load_expected(path):
+    return json.loads(pathlib.Path(path).read_text(encoding="utf-8"))
+
+
+def judge(expected, cases, end):
+    """(status, reason) from the evidence alone: pass, fail or integrity."""
+    failed = [name for name, (_, bad) in cases.items() if bad > 0]
+    if failed:
+        return "fail", f"{len(failed)} test case(s) failed: {failed[0]}"
+    missing = [name for name in expected if name not in cases]
+    if missing:
+        return "integrity", (f"{len(missing)} of {len(expected)} expected test cases never finished "
+                             f"(first: '{missing[0]}'): the process ended early or skipped them")
+    extra = [name for name in cases if name not in expected]
+    if extra:
+        return "integrity", f"unexpected test case '{extra[0]}' ran"
+    for name, count in expected.items():
+        if cases[name][0] != count:
+            return "integrity", f"'{name}' ran {cases[name][0]} assertions, the reference runs {count}"
+    if end is None:
+        return "integrity", "the test run never reached its end"
+    return "pass", ""
