@@ -35,6 +35,9 @@ TEST_CASE("chapter 1 reports both Euler errors as exactly k/2·Δt²·|g|, expli
   CHECK(s["steps"] == 30);
   CHECK(s["rhs_evals"] == 30);  // explicit Euler: one evaluation per step
   REQUIRE(s["samples"].size() >= 10);
+  // The lecture's loop, run here independently of the chapter: x with the old v, then v.
+  std::vector<double> loop{x0};
+  for (double x = x0, v = v0; loop.size() <= 30;) x += dt * v, v += dt * g, loop.push_back(x);
   for (const auto& sample : s["samples"]) {
     const double k = sample["k"], t = sample["t"];
     const double exact = x0 + v0 * t + 0.5 * g * t * t;
@@ -44,8 +47,10 @@ TEST_CASE("chapter 1 reports both Euler errors as exactly k/2·Δt²·|g|, expli
     CHECK(double(sample["exact"]) == Approx(exact).epsilon(1e-14));
     CHECK(double(sample["explicit"]) == Approx(x0 + k * dt * v0 + 0.5 * k * (k - 1) * dt * dt * g).epsilon(1e-12));
     CHECK(double(sample["implicit"]) == Approx(x0 + k * dt * v0 + 0.5 * k * (k + 1) * dt * dt * g).epsilon(1e-12));
-    CHECK(double(sample["explicit_loop"]) == Approx(double(sample["explicit"])).epsilon(1e-14));
-    CHECK(double(sample["predicted_error"]) == Approx(predicted).epsilon(1e-14));
+    CHECK(double(sample["explicit_loop"]) == Approx(loop.at(std::size_t(k))).epsilon(1e-13));
+    CHECK(double(sample["explicit"]) == Approx(loop.at(std::size_t(k))).epsilon(1e-13));
+    // The printed prediction is the gap that loop really leaves, not the chapter's own formula.
+    CHECK(double(sample["predicted_error"]) == Approx(loop.at(std::size_t(k)) - exact).epsilon(1e-9).margin(1e-13));
     if (k > 0) {
       // 1e-9 relative, as the issue asks; sign: g < 0, so explicit is above (+), implicit below (−).
       CHECK(double(sample["explicit_error"]) == Approx(predicted).epsilon(1e-9));
@@ -97,6 +102,39 @@ TEST_CASE("chapter 1's round-off sweep: float's error falls, bottoms out, then r
   CHECK(double(d["error"].back()) == Approx(0.5 * 1.0 * double(d["dt"].back()) * 9.81).epsilon(0.01));
   // The cost table counts one right-hand-side evaluation per step.
   for (const auto& row : run.summary["cost"]) CHECK(row["rhs_evals"] == row["steps"]);
+  // Within the step budget, the sweep runs exactly as asked.
+  CHECK(run.summary["roundoff"]["sweep"]["raised"] == false);
+  CHECK(double(d["dt"].back()) == Approx(1e-7).epsilon(1e-12));
+}
+
+TEST_CASE("chapter 1 runs any valid --dt and --t-end: its round-off sweep raises its smallest step to the budget and says so") {
+  // Before, this was refused (exit 2): the sweep, which the user did not ask about, would have
+  // needed 6.7e9 steps at --dt-min = 1e-9 s.
+  kit::test::TempDir out("ch01-budget");
+  const std::vector<std::string> args{"--x0", "3.7", "--v0", "-1.3", "--g", "-4.2", "--dt", "0.013", "--t-end", "6.721"};
+  auto json_args = args;
+  json_args.insert(json_args.end(), {"--json", "--no-plot", "--out", out.path().string()});
+  const auto run = run_chapter(json_args);
+  const json& s = run.summary;
+  CHECK(s["steps"] == 517);  // the table the user asked for, in full
+  CHECK(s["samples"].back()["k"] == 517);
+  for (const auto& sample : s["samples"]) CHECK(sample["match"] == true);
+  const json& sweep = s["roundoff"]["sweep"];
+  CHECK(sweep["raised"] == true);
+  CHECK(sweep["max_steps"] == 2'000'000'000L);
+  CHECK(double(sweep["dt_min_requested"]) == 1e-9);
+  CHECK(double(sweep["dt_min"]) == Approx(6.721 / 2e9).epsilon(1e-12));
+  // The sweep went down to the raised step and no run took more steps than the budget.
+  CHECK(double(s["roundoff"]["explicit_double"]["dt"].back()) == Approx(6.721 / 2e9).epsilon(1e-9));
+  CHECK(s["cost"].back()["steps"] == 2'000'000'000L);
+  for (const auto& row : s["cost"]) CHECK(long(row["steps"]) <= 2'000'000'000L);
+  // And the text says so.
+  auto text_args = args;
+  text_args.insert(text_args.end(), {"--no-plot", "--out", out.path().string()});
+  const auto text = kit::test::run_process(binary, text_args);
+  CHECK(text.exit_code == 0);
+  CHECK_THAT(text.out, Catch::Contains("at most 2000000000 steps a run") &&
+                           Catch::Contains("its smallest dt is 3.36e-09 s (--dt-min asked for 1e-09 s)"));
 }
 
 TEST_CASE("chapter 1 writes its four figures: data, script, PDF and PNG each") {
@@ -119,7 +157,8 @@ TEST_CASE("chapter 1 answers bad input with exit 2, a message naming the flag, a
                                           {{"--bogus"}, "--bogus"}, {{"--dt", "0.3", "--t-end", "1"}, "--t-end"},
                                           {{"--g", "0"}, "--g"}, {{"--dt-min", "1"}, "--dt-min"}, {{"--x0", "inf"}, "--x0"},
                                           {{"--format", "jpg"}, "--format"}, {{"--g", "1e-300"}, "--g"},
-                                          {{"--dt", "10", "--t-end", "1e4"}, "--t-end"}, {{"--dt", "1e-4", "--t-end", "1e-4", "--dt-min", "1e-3"}, "--dt-min"}});
+                                          {{"--dt", "1e-3", "--t-end", "1e4"}, "--t-end"},  // 1e7 steps to record
+                                          {{"--dt", "1e-4", "--t-end", "1e-4", "--dt-min", "1e-3"}, "--dt-min"}});
 }
 
 TEST_CASE("chapter 1 --help lists every physical flag with its unit") {

@@ -1,0 +1,24 @@
+// The steps of the run a user asks for (step_count.hpp).
+#include <catch2/catch.hpp>
+
+#include <kit/step_count.hpp>
+#include <kit/usage.hpp>
+
+TEST_CASE("a whole number of steps within the limit is the run's length") {
+  CHECK(kit::require_whole_steps(1.0, 0.1, 1'000'000) == 10);
+  CHECK(kit::require_whole_steps(6.721, 0.013, 1'000'000) == 517);
+  CHECK(kit::require_whole_steps(1.0, 1e-6, 1'000'000) == 1'000'000);
+}
+
+TEST_CASE("T/dt not whole, under one step or over the limit: a usage error naming both flags and the range") {
+  for (auto [t_end, dt] : {std::pair{1.0, 0.3}, {1e-4, 1.0}, {1e4, 1e-3}}) {
+    INFO("T = " << t_end << ", dt = " << dt);
+    try {
+      kit::require_whole_steps(t_end, dt, 1'000'000);
+      FAIL("no usage error");
+    } catch (const kit::UsageError& e) {
+      CHECK_THAT(e.what(), Catch::Contains("--t-end") && Catch::Contains("--dt") &&
+                               Catch::Contains("from 1 to 1000000 steps"));
+    }
+  }
+}
