@@ -1,6 +1,7 @@
 #include <kit/figure.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -38,7 +39,44 @@ Panel& Figure::panel(std::string xlabel, std::string ylabel, std::string panel_t
   return panels.back();
 }
 
+std::vector<std::size_t> plotted_indices(const Series& s) {
+  std::vector<std::size_t> kept;
+  const std::size_t n = s.x.size();
+  if (n <= max_plotted_points) {
+    for (std::size_t i = 0; i < n; ++i) kept.push_back(i);
+    return kept;
+  }
+  // Slices of consecutive points; each keeps its lowest and highest y in their order, so the
+  // envelope of an oscillation or a spike survives. The last point is always kept.
+  const std::size_t slices = max_plotted_points / 2;
+  for (std::size_t k = 0; k < slices; ++k) {
+    const std::size_t begin = k * n / slices, end = (k + 1) * n / slices;
+    std::size_t lo = begin, hi = begin;
+    for (std::size_t i = begin; i < end; ++i) {
+      if (s.y[i] < s.y[lo]) lo = i;
+      if (s.y[i] > s.y[hi]) hi = i;
+    }
+    kept.push_back(std::min(lo, hi));
+    if (hi != lo) kept.push_back(std::max(lo, hi));
+  }
+  if (kept.back() != n - 1) kept.push_back(n - 1);
+  return kept;
+}
+
+bool drawable(const Series& s, bool logx, bool logy) {
+  for (std::size_t i = 0; i < s.x.size(); ++i)
+    if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && (!logx || s.x[i] > 0) && (!logy || s.y[i] > 0)) return true;
+  return false;
+}
+
 namespace {
+
+// A POSIX shell single-quoted word: nothing inside is expanded ($(...), backticks, $VAR).
+std::string shell_quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
 
 // A gnuplot double-quoted string literal.
 std::string quoted(const std::string& text) {
@@ -50,15 +88,20 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
+// A value gnuplot reads: NaN and ±Inf are written as NaN (an undefined point, not drawn).
+std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", v) : std::string("NaN"); }
+
 std::string data_text(const Figure& figure) {
   std::ostringstream out;
-  out << "# " << figure.title << "\n# One block per series (gnuplot 'index'); columns: x y\n";
+  out << "# " << figure.title << "\n# One block per series (gnuplot 'index'); columns: x y\n"
+      << "# Series longer than " << max_plotted_points << " points keep the extremes of each of "
+      << max_plotted_points / 2 << " slices (what a figure can show); NaN marks an undefined value.\n";
   int index = 0;
   for (const auto& panel : figure.panels) {
     for (const auto& s : panel.series) {
       out << "\n\n# index " << index++ << ": " << (s.title.empty() ? "(no legend entry)" : s.title)
           << "  [" << panel.xlabel << " | " << panel.ylabel << "]\n";
-      for (std::size_t i = 0; i < s.x.size(); ++i) out << fmt::format("{:.17g} {:.17g}\n", s.x[i], s.y[i]);
+      for (std::size_t i : plotted_indices(s)) out << number(s.x[i]) << ' ' << number(s.y[i]) << '\n';
       if (s.x.empty()) out << "NaN NaN\n";  // an empty block would shift every later index
     }
   }
@@ -137,14 +180,33 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
     if (panel.logx) gp << "set logscale x\nset format x \"10^{%L}\"\n";
     if (panel.logy) gp << "set logscale y\nset format y \"10^{%L}\"\n";
     for (const auto& command : panel.commands) gp << command << "\n";
-    gp << "plot ";
-    for (std::size_t s = 0; s < panel.series.size(); ++s) {
-      const Series& series = panel.series[s];
-      gp << (s ? ", \\\n     " : "") << "data index " << index++ << " using 1:2 with " << series.with
-         << (series.style.empty() ? "" : " " + series.style) << " "
-         << (series.title.empty() ? "notitle" : "title " + quoted(series.title));
+    // A series with no point to draw (all undefined, or none positive on a log axis) is left
+    // out of the plot and named in a label, since gnuplot refuses a plot with nothing defined.
+    const std::string x = panel.logx ? "($1>0?$1:NaN)" : "1", y = panel.logy ? "($2>0?$2:NaN)" : "2";
+    std::vector<std::string> clauses, empty;
+    for (const Series& series : panel.series) {
+      const int block = index++;
+      if (!drawable(series, panel.logx, panel.logy)) {
+        if (!series.title.empty()) empty.push_back(series.title);
+        continue;
+      }
+      clauses.push_back(fmt::format("data index {} using {}:{} with {}{} {}", block, x, y, series.with,
+                                    series.style.empty() ? "" : " " + series.style,
+                                    series.title.empty() ? "notitle" : "title " + quoted(series.title)));
     }
-    gp << "\n";
+    if (!empty.empty()) {
+      std::string names;
+      for (const auto& name : empty) names += (names.empty() ? "" : ", ") + name;
+      gp << "set label " << quoted("nothing to draw" + std::string(panel.logy || panel.logx ? " on a log scale" : "") +
+                                   ": " + names) << " at graph 0.02, graph 0.04 left front font \",9\"\n";
+    }
+    if (clauses.empty()) {  // nothing at all: the axes, the label, and an invisible line
+      gp << "unset logscale\nset xrange [0:1]\nset yrange [0:1]\nplot -1 notitle\n";
+    } else {
+      gp << "plot ";
+      for (std::size_t c = 0; c < clauses.size(); ++c) gp << (c ? ", \\\n     " : "") << clauses[c];
+      gp << "\n";
+    }
   }
   if (multi) gp << "unset multiplot\n";
   return gp.str();
@@ -155,22 +217,24 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
   for (const auto& format : options.formats)
     if (format != "pdf" && format != "png" && format != "svg")
       throw std::invalid_argument(fmt::format("figure format '{}': expected pdf, png or svg", format));
-  fs::create_directories(options.dir);
+  // Absolute, so that the log and the renders land where asked after gnuplot's `cd`.
+  const fs::path dir = fs::absolute(options.dir);
+  fs::create_directories(dir);
   FigureFiles result;
   const std::string data_file = figure.name + ".dat";
-  write_file_atomic(options.dir / data_file, data_text(figure));
-  write_file_atomic(options.dir / (figure.name + ".gp"), gnuplot_script(figure, data_file));
-  result.files = {options.dir / data_file, options.dir / (figure.name + ".gp")};
+  write_file_atomic(dir / data_file, data_text(figure));
+  write_file_atomic(dir / (figure.name + ".gp"), gnuplot_script(figure, data_file));
+  result.files = {dir / data_file, dir / (figure.name + ".gp")};
 
   if (options.render) {
     for (const auto& format : options.formats) {
-      const fs::path final_path = options.dir / (figure.name + "." + format);
+      const fs::path final_path = dir / (figure.name + "." + format);
       const fs::path temporary = temporary_sibling(final_path);
-      const fs::path log = temporary_sibling(options.dir / (figure.name + ".gnuplot-log"));
+      const fs::path log = temporary_sibling(dir / (figure.name + ".gnuplot-log"));
       {
         // gnuplot-iostream: a pipe into a batch gnuplot run from the figure's folder, so the
         // script's relative data path works exactly as it will for a slide author.
-        Gnuplot gp(fmt::format("cd {} && gnuplot 2>{}", quoted(options.dir.string()), quoted(log.string())));
+        Gnuplot gp(fmt::format("cd {} && gnuplot 2>{}", shell_quoted(dir.string()), shell_quoted(log.string())));
         gp << "fmt = " << quoted(format) << "; out = " << quoted(temporary.filename().string()) << "\n"
            << "load " << quoted(figure.name + ".gp") << "\n";
       }  // the destructor waits for gnuplot to finish
@@ -192,7 +256,7 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
     } else if (!gnuplot_has_window_terminal()) {
       result.notes.push_back("--show: this gnuplot has no window terminal (gnuplot-nox); install gnuplot-qt to see windows");
     } else {
-      Gnuplot gp(fmt::format("cd {} && gnuplot -persist", quoted(options.dir.string())));
+      Gnuplot gp(fmt::format("cd {} && gnuplot -persist", shell_quoted(dir.string())));
       gp << "fmt = \"show\"\nload " << quoted(figure.name + ".gp") << "\n";
     }
   }

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -102,4 +104,61 @@ TEST_CASE("--show without a display writes the files and says why no window open
   REQUIRE(files.notes.size() == 1);
   CHECK_THAT(files.notes[0], Catch::Contains("no display"));
   CHECK(std::filesystem::exists(dir.path() / "sample.png"));
+}
+
+TEST_CASE("a relative figure folder and one named with shell syntax are written literally, nothing run") {
+  kit::test::TempDir dir("figure-paths");
+  const auto previous = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());
+  kit::FigureOptions options;
+  options.formats = {"png"};
+  options.dir = "relative/out";  // relative to the current folder, not to gnuplot's
+  CHECK_NOTHROW(kit::write_figure(sample_figure(), options));
+  CHECK(std::filesystem::exists(dir.path() / "relative/out/sample.png"));
+  options.dir = "$(touch injected) `touch injected2` it's";
+  CHECK_NOTHROW(kit::write_figure(sample_figure(), options));
+  CHECK(std::filesystem::exists(dir.path() / "$(touch injected) `touch injected2` it's" / "sample.png"));
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "injected"));
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "relative/out/injected"));
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "injected2"));
+  std::filesystem::current_path(previous);
+}
+
+TEST_CASE("a log panel with nothing positive to draw still renders, and names what it could not draw") {
+  kit::test::TempDir dir("figure-log");
+  kit::Figure fig("zeros", "Errors that are exactly zero");
+  auto& p = fig.panel("step Δt [s]", "|error| [m]");
+  p.logx = p.logy = true;
+  p.points("exact to the last bit", {1e-3, 1e-2}, {0.0, 0.0});
+  p.points("diverged", {1e-3, 1e-2}, {std::nan(""), INFINITY});
+  auto& q = fig.panel("step Δt [s]", "|error| [m]");
+  q.logy = true;
+  q.points("some positive", {1, 2, 3}, {-1.0, 0.0, 1e-3});
+  kit::FigureOptions options;
+  options.dir = dir.path();
+  options.formats = {"png"};
+  kit::FigureFiles files;
+  REQUIRE_NOTHROW(files = kit::write_figure(fig, options));
+  CHECK(std::filesystem::exists(dir.path() / "zeros.png"));
+  const std::string script = slurp(dir.path() / "zeros.gp");
+  CHECK(script.find("nothing to draw on a log scale: exact to the last bit, diverged") != std::string::npos);
+  CHECK(slurp(dir.path() / "zeros.dat").find("inf") == std::string::npos);  // written as NaN
+}
+
+TEST_CASE("a series of a million points is thinned to the extremes of 2000 slices, the spike kept") {
+  kit::Series s;
+  for (int i = 0; i < 1'000'000; ++i) {
+    s.x.push_back(i);
+    s.y.push_back(std::sin(i * 1e-3));
+  }
+  s.y[123'457] = 50.0;  // one spike
+  const auto kept = kit::plotted_indices(s);
+  CHECK(kept.size() <= kit::max_plotted_points + 1);
+  CHECK(kept.size() >= kit::max_plotted_points / 2);
+  CHECK(std::find(kept.begin(), kept.end(), 123'457u) != kept.end());
+  CHECK(kept.front() <= 1);
+  CHECK(kept.back() == 999'999u);
+  CHECK(std::is_sorted(kept.begin(), kept.end()));
+  kit::Series small{"", {1, 2, 3}, {1, 2, 3}, "lines", ""};
+  CHECK(kit::plotted_indices(small).size() == 3);
 }

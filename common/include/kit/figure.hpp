@@ -85,6 +85,14 @@ struct FigureFiles {
 /// temporary name. Throws std::runtime_error when gnuplot cannot produce a render.
 FigureFiles write_figure(const Figure& figure, const FigureOptions& options);
 
+/// A series longer than this is thinned in the data file to the extremes of max/2 slices: a
+/// figure shows a few thousand points, not millions.
+inline constexpr std::size_t max_plotted_points = 4000;
+/// The indices of `s` written to the data file (all of them, or the thinned extremes).
+std::vector<std::size_t> plotted_indices(const Series& s);
+/// True when `s` has a point gnuplot can draw: finite, and positive on a log axis.
+bool drawable(const Series& s, bool logx, bool logy);
+
 /// The gnuplot script for `figure` reading `data_file` (exposed for tests).
 std::string gnuplot_script(const Figure& figure, const std::string& data_file);
 
