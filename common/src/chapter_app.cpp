@@ -2,11 +2,29 @@
 
 #include <cerrno>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include <fmt/format.h>
 
+#include <kit/atomic_file.hpp>
+
 namespace kit {
+
+void check_output_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  if (dir.empty()) throw UsageError("--out '': expected a folder name (or --no-plot to write no figure)");
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (!fs::is_directory(dir))
+    throw UsageError(fmt::format("--out '{}': not a folder that can be created{}", dir,
+                                 error ? " (" + error.message() + ")" : std::string(" (a file has that name)")));
+  const fs::path probe = temporary_sibling(fs::path(dir) / ".kit-write-probe");
+  const bool writable = std::ofstream(probe).good();
+  discard_temporary(probe);
+  if (!writable) throw UsageError(fmt::format("--out '{}': the folder is not writable", dir));
+}
 
 ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::string description)
     : chapter_(std::move(chapter)), app_(std::move(description), chapter_) {
@@ -96,6 +114,7 @@ int ChapterApp::run(int argc, const char* const* argv, const std::function<void(
   for (const auto& record : record_parameters_) record();
   report_ = Report(text(), summary_);
   try {
+    if (!options_.no_plot) check_output_folder(options_.out_dir);  // before any computation
     body();
   } catch (const UsageError& e) {
     std::cerr << chapter_ << ": error: " << e.what() << "\n";

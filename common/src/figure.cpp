@@ -239,10 +239,9 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
            << "load " << quoted(figure.name + ".gp") << "\n";
       }  // the destructor waits for gnuplot to finish
       const std::string messages = read_file(log);
-      std::error_code ignored;
-      fs::remove(log, ignored);
+      discard_temporary(log);
       if (!fs::exists(temporary) || fs::file_size(temporary) == 0) {
-        fs::remove(temporary, ignored);
+        discard_temporary(temporary);
         throw std::runtime_error(fmt::format("gnuplot could not draw {}: {}", final_path.string(), messages));
       }
       commit_file(temporary, final_path);

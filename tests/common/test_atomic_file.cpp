@@ -1,3 +1,8 @@
+#include <csignal>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -23,5 +28,22 @@ TEST_CASE("a write that cannot happen throws, naming the path, and leaves nothin
   kit::test::TempDir dir("atomic-fail");
   const auto path = dir.path() / "missing-folder" / "out.txt";
   CHECK_THROWS_WITH(kit::write_file_atomic(path, "x"), Catch::Contains("missing-folder"));
+  CHECK(kit::test::files_under(dir.path()).empty());
+}
+
+TEST_CASE("a process killed by SIGTERM while a file is half-written leaves no temporary behind") {
+  kit::test::TempDir dir("atomic-signal");
+  const auto path = dir.path() / "figure.png";
+  const pid_t child = ::fork();
+  if (child == 0) {  // the child starts a write, as a render in progress, then is terminated
+    const auto temporary = kit::temporary_sibling(path);
+    std::ofstream(temporary) << "half a figure";
+    ::kill(::getpid(), SIGTERM);
+    ::_exit(0);  // not reached
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  CHECK(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGTERM);
   CHECK(kit::test::files_under(dir.path()).empty());
 }

@@ -6,8 +6,12 @@
 namespace kit {
 
 /// A temporary name next to `path` ("name.ext.tmp-<pid>"), on the same file system, so the
-/// final rename is atomic.
+/// final rename is atomic. The name is remembered until commit_file or discard_temporary: a
+/// SIGTERM, SIGINT or SIGHUP (a timeout, Ctrl-C, a closed terminal) removes every remembered
+/// temporary before the process dies, so an interrupted run leaves no half-written file.
 std::filesystem::path temporary_sibling(const std::filesystem::path& path);
+/// Removes a temporary that will not be committed (ignoring a missing file) and forgets it.
+void discard_temporary(const std::filesystem::path& temporary);
 
 /// Writes `content` to `path` through a temporary sibling. Throws std::runtime_error naming
 /// the path when the write fails; no partial file is left behind.

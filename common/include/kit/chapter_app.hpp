@@ -21,6 +21,10 @@
 
 namespace kit {
 
+/// Creates `dir` if needed and checks it is a writable folder; a UsageError naming --out
+/// otherwise. Chapters call it (through run) before computing anything.
+void check_output_folder(const std::string& dir);
+
 /// The flags every chapter shares.
 struct CommonOptions {
   std::string out_dir;                             ///< --out: where figures go
