@@ -16,7 +16,7 @@
 #include <kit/peers.hpp>
 #include <kit/stopwatch.hpp>
 #include <kit/table.hpp>
-#include <kit/test_problems.hpp>
+#include <kit/adaptive_rk_models.hpp>
 
 #include "embedded_rk.hpp"
 #include "pi_controller.hpp"

@@ -14,7 +14,7 @@
 #include <kit/peers.hpp>
 #include <kit/stopwatch.hpp>
 #include <kit/table.hpp>
-#include <kit/test_problems.hpp>
+#include <kit/adaptive_rk_models.hpp>
 
 namespace {
 // Seconds of the least disturbed call of each run. The runs take turns, round after round, in a
