@@ -125,8 +125,12 @@ GslStepResult gsl_single_step(const GslSolver::Rhs& f, std::size_t dim, GslStepp
 Stats GslSolver::stats() const {
   Stats s;
   s.rhs_evals = impl_->rhs_evals;
-  // The driver exposes only its step counter (accepted and rejected together).
-  s.steps = static_cast<long>(impl_->driver->n);
+  // The evolve object counts every attempt (count) and every rejected one (failed_steps) over
+  // the solver's life. The driver's own counter n restarts at each gsl_odeiv2_driver_apply, so
+  // with several sample times it would hold the last interval's steps only.
+  const gsl_odeiv2_evolve* evolve = impl_->driver->e;
+  s.steps = static_cast<long>(evolve->count - evolve->failed_steps);
+  s.rejected = static_cast<long>(evolve->failed_steps);
   return s;
 }
 

@@ -2,6 +2,8 @@
 // Euler's bounded energy, the evaluation counts of the cost table, and bad input.
 #include <cmath>
 #include <map>
+#include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -71,6 +73,32 @@ TEST_CASE("chapter 3: the cost table's counts follow the orders: RK4 needs the f
   CHECK(long(n["midpoint"]["1e-03"]["evaluations"]) % 2 == 0);
 }
 
+TEST_CASE("chapter 3 never refuses a valid --t-end or --stiffness for its sweep: it shortens T and says so") {
+  // Both were refused before (ω·T > 5000). ω·T = 1e5 (6.3e4 for K = 1e9 N/m) would need 10·(ω·T)² = 1e11
+  // steps for a decade of ω·Δt below 1/(ω·T): T becomes sqrt(1e6/10)/ω, the longest 1e6 steps allow.
+  for (const auto& [args, t] : std::map<std::vector<std::string>, double>{
+           {{"--t-end", "1e4", "--periods", "10"}, std::sqrt(1e5) / 10}, {{"--stiffness", "1e9", "--periods", "10"}, std::sqrt(1e5 / 1e9)}}) {
+    INFO(args[0]);
+    const json s = run_chapter(args);
+    CHECK(s["spring"]["adapted"] == true);
+    CHECK(double(s["spring"]["omega_t_max"]) == Approx(std::sqrt(1e5)).epsilon(1e-12));  // a decade below 1/(ω·T) in 1e6 steps
+    CHECK(double(s["spring"]["t"]) == Approx(t).epsilon(1e-12));
+    for (const auto& [scheme, order] : std::map<std::string, double>{
+             {"explicit_euler", 1}, {"implicit_euler", 1}, {"symplectic_euler", 1}, {"midpoint", 2}, {"rk4", 4}})
+      CHECK(double(s["orders"][scheme]["fitted"]) == Approx(order).margin(0.1));  // still the orders
+  }
+  CHECK(default_run()["spring"]["adapted"] == false);
+  CHECK(double(default_run()["spring"]["t"]) == 2.0);
+}
+
+TEST_CASE("chapter 3 on a critically damped spring, whose motion dies below round-off: no fit is null, not a crash") {
+  const json s = run_chapter({"--damping", "20", "--periods", "10"});  // μ² = 4mK
+  CHECK(double(s["orders"]["explicit_euler"]["fitted"]) == Approx(1).margin(0.1));
+  CHECK(long(s["orders"]["rk4"]["points"]) < 2);
+  CHECK(s["orders"]["rk4"]["fitted"].is_null());  // NaN in the JSON: nothing to fit
+  CHECK(s["evaluations_needed"]["rk4"]["1e-09"]["extrapolated"] == false);
+}
+
 TEST_CASE("chapter 3 writes its three figures, with no gnuplot warning") {
   kit::test::TempDir out("ch03-figures");
   const auto result = kit::test::run_process(binary, {"--quiet", "--out", out.path().string()});
@@ -81,7 +109,7 @@ TEST_CASE("chapter 3 writes its three figures, with no gnuplot warning") {
 
 TEST_CASE("chapter 3 answers bad input with exit 2, a message naming the flag, and no file") {
   kit::test::expect_usage_errors(binary, {{{"--mass", "-1"}, "--mass"}, {{"--t-end", "0"}, "--t-end"},
-                                          {{"--stiffness", "1e9"}, "--stiffness"}, {{"--t-end", "1e4"}, "--t-end"},
+                                          {{"--stiffness", "2e9"}, "--stiffness"}, {{"--t-end", "2e4"}, "--t-end"},
                                           {{"--stiffness", "nan"}, "--stiffness"}, {{"--periods", "0"}, "--periods"},
                                           {{"--free-fall-steps", "1.5"}, "--free-fall-steps"}, {{"--bogus"}, "--bogus"}});
 }

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <map>
+#include <tuple>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -62,6 +65,11 @@ TEST_CASE("chapter 4's DOPRI5 takes Hairer's counts on Arenstorf: 985, 2161, 504
   CHECK(at_tolerance(wp["DOPRI5 (kit)"], 1e-8)["evaluations"] == 2161);
   CHECK(at_tolerance(wp["DOPRI5 (kit)"], 1e-10)["evaluations"] == 5047);
   CHECK(at_tolerance(wp["DOPRI5 (kit)"], 1e-6)["rejected"] == 23);
+  for (const auto& [tol, steps, rejected] : {std::tuple{1e-6, 164L, 23L}, {1e-8, 360L, 21L}, {1e-10, 841L, 0L}}) {
+    const json& p = at_tolerance(wp["DOPRI5 (kit)"], tol);  // Hairer's steps count accepted and rejected ones
+    CHECK(long(p["accepted"]) + long(p["rejected"]) == steps);
+    CHECK(p["rejected"] == rejected);
+  }
   const json& d = default_run()["detail"];
   CHECK(d["rhs_evals"] == 985);
   CHECK(d["accepted"] == 141);
@@ -71,6 +79,14 @@ TEST_CASE("chapter 4's DOPRI5 takes Hairer's counts on Arenstorf: 985, 2161, 504
   CHECK(at_tolerance(wp["GSL rkf45"], 1e-8)["evaluations"] == 2611);
   CHECK(at_tolerance(wp["GSL rk8pd"], 1e-8)["evaluations"] == 2185);
   CHECK(at_tolerance(wp["Boost.Odeint dopri5"], 1e-8)["evaluations"] == 2491);
+  // GSL's accepted and rejected steps are its own (its evolve object's): 6 evaluations per attempt.
+  const json& rkck = at_tolerance(wp["GSL rkck"], 1e-8);
+  CHECK(rkck["accepted"] == 338);
+  CHECK(rkck["rejected"] == 59);
+  CHECK(long(rkck["evaluations"]) == 1 + 6 * (long(rkck["accepted"]) + long(rkck["rejected"])));
+  // Boost.Odeint reports its accepted steps only: the rejected ones are unknown, not 0.
+  CHECK(at_tolerance(wp["Boost.Odeint dopri5"], 1e-8)["accepted"].is_number_integer());
+  CHECK(at_tolerance(wp["Boost.Odeint dopri5"], 1e-8)["rejected"].is_null());
 }
 
 TEST_CASE("chapter 4's DOPRI5 reaches every error from 1e-3 to 1e-7 with fewer evaluations than GSL rkck, rkf45 and Boost dopri5") {
@@ -99,7 +115,27 @@ TEST_CASE("chapter 4: on stiff Van der Pol (μ = 100) DOPRI5 finishes, with the 
   CHECK(long(v["accepted"]) > 10'000);
   CHECK(double(v["median_step"]) < 0.05);  // against ~1 where accuracy alone would allow it
   CHECK(double(v["median_h_lambda"]) == Approx(3.31).epsilon(0.15));  // on DOPRI5's real-axis stability boundary
-  CHECK(v["stability_bound"] == true);
+  // Independently of that median: with h·μ(x² − 1) = 3.31 on the four slow branches of two periods,
+  // the step count is 4·(μ²/3.31)·∫₁² (x² − 1)²/x dx = 4·(ln 2 + 3/4)·μ²/3.31 = 17 440 at μ = 100.
+  CHECK(double(v["accepted"]) == Approx(4 * (std::log(2.0) + 0.75) * 100 * 100 / 3.31).epsilon(0.05));
+}
+
+TEST_CASE("chapter 4 never refuses a large --mu: past the step budget, Van der Pol's horizon shrinks and it says so") {
+  kit::test::TempDir out("ch04-stiff");
+  const auto result = kit::test::run_process(binary, {"--quiet", "--mu", "1e4", "--out", out.path().string()});
+  REQUIRE(result.exit_code == 0);
+  const auto run = kit::test::run_process(binary, {"--json", "--no-plot", "--mu", "1e4", "--out", out.path().string()});
+  REQUIRE(run.exit_code == 0);
+  const json v = json::parse(run.out)["van_der_pol"];
+  CHECK(v["adapted"] == true);  // two periods would take ~1.7e8 steps
+  CHECK(double(v["predicted_steps"]) > 1e8);
+  CHECK(long(v["accepted"]) + long(v["rejected"]) == long(v["budget"]));
+  CHECK(double(v["horizon"]) < double(v["two_periods"]) / 100);
+  CHECK(double(v["horizon"]) > 0);
+  CHECK(double(v["median_h_lambda"]) == Approx(3.31).epsilon(0.15));  // still stability-bound on what it covered
+  // The figure draws at most 20 000 of the 2e6 accepted steps.
+  std::ifstream data(out.path() / "van-der-pol.dat");
+  CHECK(std::count(std::istreambuf_iterator<char>(data), std::istreambuf_iterator<char>(), '\n') < 50'000);
 }
 
 TEST_CASE("chapter 4: at μ = 10 the step is below the stability limit, and the chapter says accuracy decides") {

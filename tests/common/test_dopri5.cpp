@@ -12,7 +12,7 @@
 #include <kit/free_fall.hpp>
 #include <kit/pi_step_control.hpp>
 #include <kit/spring.hpp>
-#include <kit/test_problems.hpp>
+#include <kit/adaptive_rk_models.hpp>
 
 namespace {
 // dopri5.f's step-size factor, transcribed: FAC11 = err^EXPO1, FAC = FAC11 / FACOLD^BETA,

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <kit/adaptive_rk_models.hpp>
 #include <kit/free_fall.hpp>
 #include <kit/reference_solver.hpp>
 
@@ -48,4 +49,31 @@ TEST_CASE("a GSL failure (step budget exhausted) is a SolverError naming the ste
   CHECK_THROWS_AS(kit::reference_solution(fast, 0.0, kit::Vec2(1.0, 0.0), {10.0}, options), kit::SolverError);
   CHECK_THROWS_WITH(kit::reference_solution(fast, 0.0, kit::Vec2(1.0, 0.0), {10.0}, options),
                     Catch::Contains("rk8pd") && Catch::Contains("t = 0"));
+}
+
+TEST_CASE("Stats::steps counts the accepted steps of every sample interval; rejected steps are counted apart") {
+  // u' = (1, 0) is integrated exactly, so GSL's control grows h by its cap, 5, after each step:
+  // 0.1 to t = 0.1, then 0.4 (cut to reach the sample at 0.5), then 0.5 (cut to reach 1.0).
+  kit::GslOptions options;
+  options.stepper = kit::GslStepper::rkck;
+  options.h0 = 0.1;
+  kit::Stats stats;
+  const auto line = [](double, const kit::Vec2&) { return kit::Vec2(1.0, 0.0); };
+  const auto states = kit::reference_solution(line, 0.0, kit::Vec2(0.0, 0.0), {0.5, 1.0}, options, &stats);
+  CHECK(states.u[1][0] == Approx(1.0).margin(1e-14));
+  CHECK(stats.steps == 3);  // GSL's driver counter, reset at each sample, would say 1
+  CHECK(stats.rejected == 0);
+  CHECK(stats.rhs_evals == 1 + 6 * 3);  // rkck: 5 stages and f at the new point, reused as the next k1
+}
+
+TEST_CASE("GSL rkck on Arenstorf at 1e-8 rejects steps, and spends 6 evaluations on each attempt, accepted or not") {
+  kit::GslOptions options;
+  options.stepper = kit::GslStepper::rkck;
+  options.rtol = options.atol = 1e-8;
+  options.h0 = 1e-4;
+  kit::Stats stats;
+  kit::reference_solution(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), {kit::Arenstorf::period}, options, &stats);
+  CHECK(stats.rhs_evals == 2383);  // ANCHORS.md: GSL rkck, tol 1e-8
+  CHECK(stats.rejected > 0);
+  CHECK(stats.rhs_evals == 1 + 6 * (stats.steps + stats.rejected));
 }

@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <kit/reference_solver.hpp>
-#include <kit/test_problems.hpp>
+#include <kit/adaptive_rk_models.hpp>
 
 #include "cases.hpp"
 #include "embedded_rk.hpp"

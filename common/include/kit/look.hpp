@@ -38,5 +38,6 @@ inline const std::string stable = "lc rgb '#2ca02c'";
 inline const std::string unstable = "lc rgb '#d62728'";
 // Guides drawn with `set arrow`: thresholds, boundaries.
 inline const std::string guide = "lc rgb '#888888' dt 3";
+inline const std::string guide_label = "tc rgb '#777777' font ',8'";  // `set label` text next to a guide
 
 }  // namespace kit::look

@@ -45,7 +45,7 @@ class GslSolver {
   /// right-hand side returns a non-finite value.
   void advance(double& t, double* u, double t1);
 
-  /// Evaluations of f and steps taken (accepted + rejected) so far.
+  /// Evaluations of f, accepted steps (Stats::steps) and rejected steps, over every advance.
   Stats stats() const;
 
  private:

@@ -1,6 +1,7 @@
 #pragma once
-// Standard non-stiff and mildly stiff test problems for adaptive integrators
-// (Hairer, Nørsett & Wanner, Solving ODEs I, II.0 and II.10).
+// The models of chapter 4 (adaptive Runge–Kutta): the standard non-stiff and stiff test problems
+// of Hairer, Nørsett & Wanner, Solving ODEs I, II.0 and II.10 (Arenstorf, Kepler) and II, IV.1
+// (Van der Pol). ANCHORS.md lists Hairer's published DOPRI5 counts on Arenstorf.
 #include <cmath>
 
 #include <kit/state.hpp>

@@ -1,0 +1,49 @@
+#include <kit/work_precision.hpp>
+
+#include <algorithm>
+#include <limits>
+
+#include <kit/measure.hpp>
+#include <kit/stopwatch.hpp>
+
+namespace kit {
+
+std::optional<long> WorkPoint::attempts() const {
+  if (!accepted || !rejected) return std::nullopt;
+  return *accepted + *rejected;
+}
+
+std::vector<double> WorkCurve::evaluations() const {
+  std::vector<double> values;
+  for (const WorkPoint& p : points) values.push_back(static_cast<double>(p.rhs_evals));
+  return values;
+}
+
+std::vector<double> WorkCurve::errors() const {
+  std::vector<double> values;
+  for (const WorkPoint& p : points) values.push_back(p.error);
+  return values;
+}
+
+std::vector<double> WorkCurve::seconds() const {
+  std::vector<double> values;
+  for (const WorkPoint& p : points) values.push_back(p.seconds);
+  return values;
+}
+
+double WorkCurve::evaluations_to_reach(double error) const { return cost_to_reach(evaluations(), errors(), error); }
+
+std::vector<double> fastest_interleaved(const std::vector<std::function<void()>>& runs, const WorkTiming& timing) {
+  std::vector<double> best(runs.size(), std::numeric_limits<double>::infinity());
+  for (int round = 0; round < timing.rounds; ++round) {
+    for (std::size_t turn = 0; turn < runs.size(); ++turn) {
+      const std::size_t i = (turn + static_cast<std::size_t>(round)) % runs.size();  // each follows each in turn
+      double seconds = 0;
+      time_per_call([&] { runs[i](); return 0; }, seconds, timing.min_seconds);
+      best[i] = std::min(best[i], seconds);
+    }
+  }
+  return best;
+}
+
+}  // namespace kit

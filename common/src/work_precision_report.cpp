@@ -1,0 +1,33 @@
+#include <kit/work_precision_report.hpp>
+
+#include <optional>
+#include <string>
+
+#include <kit/named_report_table.hpp>
+
+namespace kit {
+
+void report_work_precision(std::ostream& text, Report& report, std::string_view section,
+                           const std::vector<WorkCurve>& curves) {
+  NamedReportTable table(text, report.json(section),
+                         {{"method", "method"}, {"tolerance", "tolerance", "{:.0e}"}, {"RHS evals", "evaluations"},
+                          {"accepted", "accepted"}, {"rejected", "rejected"}, {"max |y(T) - ref|", "error", "{:.2e}"},
+                          {"time [s]", "seconds", "{:.2e}"}, {"", "finished"}});
+  const auto count = [](const std::optional<long>& n) { return n ? ReportValue{*n} : ReportValue{}; };
+  long unfinished = 0;
+  for (const WorkCurve& c : curves) {
+    for (const WorkPoint& w : c.points) {
+      table.append(c.label, {c.label, w.tolerance, w.rhs_evals, count(w.accepted), count(w.rejected), w.error,
+                             w.seconds, w.finished});
+      if (!w.finished) ++unfinished;
+    }
+  }
+  table.print();
+  if (unfinished > 0)
+    report.say(std::string(section) + "_notes",
+               "{unfinished} runs stopped before T (step budget or step too small): their error is not an error "
+               "at T (\"finished\": false in the JSON).\n",
+               {{"unfinished", unfinished}});
+}
+
+}  // namespace kit
