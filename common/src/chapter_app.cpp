@@ -3,27 +3,27 @@
 #include <cerrno>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
-#include <fmt/format.h>
+#include <unistd.h>
 
-#include <kit/atomic_file.hpp>
+#include <fmt/format.h>
 
 namespace kit {
 
 void check_output_folder(const std::string& dir) {
   namespace fs = std::filesystem;
   if (dir.empty()) throw UsageError("--out '': expected a folder name (or --no-plot to write no figure)");
+  // Nothing is created here (a refused run leaves no trace): the folder, or the nearest part of
+  // its path that exists, must be a folder this process may write into.
   std::error_code error;
-  fs::create_directories(dir, error);
-  if (!fs::is_directory(dir))
-    throw UsageError(fmt::format("--out '{}': not a folder that can be created{}", dir,
-                                 error ? " (" + error.message() + ")" : std::string(" (a file has that name)")));
-  const fs::path probe = temporary_sibling(fs::path(dir) / ".kit-write-probe");
-  const bool writable = std::ofstream(probe).good();
-  discard_temporary(probe);
-  if (!writable) throw UsageError(fmt::format("--out '{}': the folder is not writable", dir));
+  fs::path existing = fs::absolute(dir, error);
+  while (!existing.empty() && !fs::exists(existing, error) && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (!fs::is_directory(existing, error))
+    throw UsageError(fmt::format("--out '{}': {} is a file, not a folder", dir, existing.string()));
+  if (::access(existing.c_str(), W_OK | X_OK) != 0)
+    throw UsageError(fmt::format("--out '{}': {} is not writable", dir, existing.string()));
 }
 
 ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::string description)

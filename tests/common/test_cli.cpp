@@ -96,11 +96,10 @@ TEST_CASE("a UsageError thrown by the body exits 2, any other failure exits 1") 
   CHECK_THAT(captured.str(), Catch::Contains("whole number of steps") && Catch::Contains("solver failed"));
 }
 
-TEST_CASE("a bad --out is refused with exit 2 before the body runs: empty, a file, unwritable") {
+TEST_CASE("a bad --out is refused with exit 2 before the body runs: empty, a file, below a file") {
   kit::test::TempDir dir("cli-out");
   std::ofstream(dir.path() / "a-file") << "x";
-  for (const std::string& bad : {std::string(""), (dir.path() / "a-file").string(), (dir.path() / "a-file" / "sub").string(),
-                                std::string("/proc/kit-cannot-write-here")}) {
+  for (const std::string& bad : {std::string(""), (dir.path() / "a-file").string(), (dir.path() / "a-file" / "sub").string()}) {
     const auto outcome = run_app({"--out", bad, "--quiet"});
     INFO("--out '" << bad << "' -> " << outcome.err);
     CHECK(outcome.code == 2);
@@ -110,5 +109,5 @@ TEST_CASE("a bad --out is refused with exit 2 before the body runs: empty, a fil
   CHECK(run_app({"--out", "", "--no-plot", "--quiet"}).code == 0);  // no figure, no folder needed
   const auto fine = run_app({"--out", (dir.path() / "new" / "folder").string(), "--quiet"});
   CHECK(fine.code == 0);
-  CHECK(kit::test::files_under(dir.path()).size() == 1);  // a-file; the probe left nothing behind
+  CHECK(kit::test::files_under(dir.path()).size() == 1);  // a-file: the check itself creates nothing
 }

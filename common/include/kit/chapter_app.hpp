@@ -21,8 +21,8 @@
 
 namespace kit {
 
-/// Creates `dir` if needed and checks it is a writable folder; a UsageError naming --out
-/// otherwise. Chapters call it (through run) before computing anything.
+/// Checks that `dir` is, or can be created as, a writable folder (creating nothing); a
+/// UsageError naming --out otherwise. Chapters call it (through run) before computing anything.
 void check_output_folder(const std::string& dir);
 
 /// The flags every chapter shares.
