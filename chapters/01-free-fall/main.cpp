@@ -9,7 +9,6 @@
 
 #include <kit/euler_gap.hpp>
 #include <kit/free_fall_flags.hpp>
-#include <kit/keyed_report_table.hpp>
 #include <kit/step_count.hpp>
 
 #include "free_fall_euler.hpp"
@@ -105,7 +104,7 @@ kit::Roundoff roundoff(kit::Report& report, const Setup& s) {
   }
   cost.print();
   report.print("\nWhere round-off wins (the error falls with dt, then rises again below the best dt):\n");
-  kit::KeyedReportTable wins(report, "roundoff", {{"curve", ""}, {"best Δt [s]", "best_dt", "{:.3g}"},
+  auto wins = report.table("roundoff", {{"curve", ""}, {"best Δt [s]", "best_dt", "{:.3g}"},
       {"|error| [m]", "best_error", "{:.3g}"}, {"smallest Δt [s]", "smallest_dt", "{:.3g}"},
       {"|error| there [m]", "smallest_dt_error", "{:.3g}"}});
   for (auto [key, curve, sweep] : {std::tuple{"explicit_double", "explicit, double", &r.doubles},

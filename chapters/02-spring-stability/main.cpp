@@ -3,7 +3,6 @@
 // item 4); implicit Euler shrinks by the inverse, for every Δt (item 5); symplectic Euler stays
 // bounded while Δt < 2/ω (item 7). With damping, explicit Euler is stable iff Δt < μ/K (item 6).
 // Each critical step is measured by bisection on long runs and printed beside theory.
-#include <kit/keyed_report_table.hpp>
 #include <kit/spring_flags.hpp>
 #include <kit/step_count.hpp>
 
@@ -47,7 +46,7 @@ kit::SpringRuns every_scheme(kit::ChapterApp& app, const Setup& s) {
   const auto runs = kit::run_every_scheme(s.spring, s.u0, s.dt, s.n);
   const double zeta = s.spring.damping_ratio(), exact = kit::spring_motion(s.spring, s.u0, s.t_end)[0];
   const std::string factor = kit::factor_format(kit::largest_factor(runs, s.h(), zeta));
-  kit::KeyedReportTable table(app.report(), "runs", {{"scheme", ""}, {"x(T) [m]", "x_end", "{:.6f}"},
+  auto table = app.report().table("runs", {{"scheme", ""}, {"x(T) [m]", "x_end", "{:.6f}"},
       {"|x(T) - exact|", "error_end", "{:.2e}"}, {"E(T)/E(0)", "energy_ratio", "{:.3e}"},
       {"growth/step", "growth_per_step", factor}, {"spectral radius", "spectral_radius", factor},
       {"status", "status"}, {"", "max_energy_drift"}, {"", "steps"}, {"", "diverged"}});
@@ -72,7 +71,7 @@ kit::SpringRuns every_scheme(kit::ChapterApp& app, const Setup& s) {
 // 3. Critical steps ("Conditionnellement stable"), measured by bisection beside theory.
 void critical_steps(kit::Report& report, const Setup& s) {
   report.print("\nCritical steps (bisection on long runs; above them the motion grows without bound):\n");
-  kit::KeyedReportTable table(report, "critical", {{"scheme", ""}, {"μ [N·s/m]", "damping", "{:.4g}"},
+  auto table = report.table("critical", {{"scheme", ""}, {"μ [N·s/m]", "damping", "{:.4g}"},
       {"ζ", "zeta", "{:.3g}"}, {"measured Δt [s]", "measured", "{:.5e}"},
       {"from R(z) [s]", "analytic", "{:.5e}"}, {"formula", ""}, {"closed form [s]", "closed_form", "{:.5e}"},
       {"measured vs closed form", "relative_difference", "{:+.2e}"}});
@@ -109,9 +108,9 @@ void implicit_damping(kit::Report& report, const Setup& s) {
 
 // 5. Extremes ("Ressorts raides: K grand ⇒ stiff"): what 1000 steps of Δt do to each scheme.
 void stiff_springs(kit::Report& report, const Setup& s) {
-  kit::KeyedReportTable amplitudes(report, "extremes_amplitude", kit::scheme_columns({{"spring", ""},
+  auto amplitudes = report.table("extremes_amplitude", kit::scheme_columns({{"spring", ""},
       {"ζ", "zeta", "{:.1f}"}, {"ω·Δt", "omega_dt", "{:.2e}"}}, "×{:.3g}"));
-  kit::KeyedReportTable divergences(report, "extremes", kit::scheme_columns({{"spring", ""}}));
+  auto divergences = report.table("extremes", kit::scheme_columns({{"spring", ""}}));
   for (const auto& row : kit::measure_extremes(s.spring, s.u0, s.dt, 1000)) {
     amplitudes.row(row.label, row.amplitudes);
     divergences.row(row.label, row.divergences);

@@ -14,7 +14,6 @@
 #include <kit/energy_drift.hpp>
 #include <kit/fixed_steps.hpp>
 #include <kit/free_fall.hpp>
-#include <kit/named_report_table.hpp>
 #include <kit/scheme_figures.hpp>
 #include <kit/spring.hpp>
 #include <kit/spring_flags.hpp>
@@ -59,7 +58,7 @@ Sweeps orders_on_the_spring(kit::ChapterApp& app, const kit::Spring& spring, con
     app.report().say("spring", "(--t-end {t_end} s gives omega·T = {omega_t:.3g}; a decade of omega·dt <= "
                      "min(0.05, 1/(omega·T)) in 1e6 steps needs omega·T <= {omega_t_max:.3g}.)\n",
                      {{"t_end", t_end}, {"omega_t", w * t_end}, {"omega_t_max", w * horizon.t}});
-  kit::NamedReportTable orders(app.text(), app.report().json("orders"), {{"scheme", "scheme"},
+  auto orders = app.report().table("orders", {{"scheme", "scheme"},
       {"expected order", "expected"}, {"fitted order", "fitted", "{:.3f}"}, {"points fitted", "points"},
       {"evals/step", "evaluations_per_step"}, {"best error [m]", "best_error", "{:.1e}"}});
   Sweeps sweeps;
@@ -84,8 +83,7 @@ Drifts energy_over_periods(kit::ChapterApp& app, const kit::Spring& spring, cons
   app.report().say("energy_run", "\nEnergy over {periods} periods with omega·dt = {omega_dt} ({steps} "
                    "steps):\n",
                    {{"periods", periods}, {"omega_dt", 0.1}, {"steps", steps}});
-  kit::NamedReportTable table(app.text(), app.report().json("energy"),
-                              {{"scheme", "scheme"}, {"max |E/E0 - 1|", "max_drift", "{:.2e}"},
+  auto table = app.report().table("energy", {{"scheme", "scheme"}, {"max |E/E0 - 1|", "max_drift", "{:.2e}"},
                                {"E/E0 at the end", "final_ratio", "{:.3e}"}});
   Drifts drifts;
   const auto energy = [&](const Vec2& u) { return spring.energy(u); };
@@ -102,7 +100,7 @@ void what_accuracy_costs(kit::ChapterApp& app, const Sweeps& sweeps) {
   app.report().print("\nRight-hand-side evaluations needed for an error at T (implicit Euler: a linear "
                      "solve counts as one;\npast 1e9 steps round-off wins over truncation in double, "
                      "chapter 1):\n");
-  kit::NamedReportTable cost(app.text(), app.report().json("evaluations_needed"), {{"scheme", "scheme"},
+  auto cost = app.report().table("evaluations_needed", {{"scheme", "scheme"},
       {"error at T [m]", "target", "{:.0e}"}, {"measured", "measured"},
       {"extrapolated", "extrapolation", "~{:.0e}"}, {"within 1e9 steps", "reachable"},
       {"", "evaluations"}, {"", "extrapolated"}});
@@ -111,7 +109,7 @@ void what_accuracy_costs(kit::ChapterApp& app, const Sweeps& sweeps) {
       const auto n = kit::evaluations_needed(sweep, kit::evaluations_per_step(s), target);
       const kit::ReportValue measured = n.extrapolated ? kit::ReportValue{} : long(n.evaluations);
       const kit::ReportValue fitted = n.extrapolated ? kit::ReportValue{n.evaluations} : kit::ReportValue{};
-      cost.row(fmt::format("{}/{:.0e}", kit::key(s), target),
+      cost.row_at({kit::key(s), fmt::format("{:.0e}", target)},
                {kit::name(s), target, measured, fitted, n.reachable, n.extrapolated ? fitted : measured,
                 n.extrapolated});
     }

@@ -84,7 +84,7 @@ Curves work_against_precision(kit::ChapterApp& app, const kit::OrbitProblem& p, 
                    "fixed RK4: the number of steps; time: fastest of {rounds} interleaved rounds):\n",
                    {{"problem", p.name}, {"rounds", long(timing.rounds)},
                     {"min_seconds", timing.min_seconds}});
-  kit::report_work_precision(app.text(), app.report(), "work_precision", curves);
+  kit::report_work_precision(app.report(), "work_precision", curves);
   return curves;
 }
 

@@ -44,21 +44,50 @@ ReportTable::ReportTable(std::ostream& text, nlohmann::json& rows, std::vector<C
         for (const auto& c : columns_)
           if (!c.header.empty()) headers.push_back(c.header);
         return headers;
-      }()) {
-  if (!rows_->is_array()) *rows_ = nlohmann::json::array();
-}
+      }()) {}
 
-void ReportTable::row(std::vector<ReportValue> values, bool printed) {
+nlohmann::json ReportTable::record(std::vector<ReportValue> values, bool printed) {
   if (values.size() != columns_.size())
     throw std::invalid_argument(fmt::format("report row has {} values for {} columns", values.size(), columns_.size()));
   nlohmann::json object = nlohmann::json::object();
   std::vector<std::string> cells;
   for (std::size_t i = 0; i < values.size(); ++i) {
-    object[columns_[i].key] = to_json(values[i]);
+    if (!columns_[i].key.empty()) object[columns_[i].key] = to_json(values[i]);
     if (!columns_[i].header.empty()) cells.push_back(format_value(values[i], columns_[i].format));
   }
-  rows_->push_back(std::move(object));
   if (printed) table_.add_row(std::move(cells));
+  return object;
+}
+
+nlohmann::json& ReportTable::slot(const std::vector<std::string>& path) {
+  nlohmann::json* node = rows_;
+  for (const auto& part : path) node = &(*node)[part];  // literal keys: "rad/s" stays one key
+  return *node;
+}
+
+void ReportTable::row(std::vector<ReportValue> values, bool printed) {
+  nlohmann::json object = record(std::move(values), printed);
+  if (!rows_->is_array()) *rows_ = nlohmann::json::array();
+  rows_->push_back(std::move(object));
+}
+
+void ReportTable::row(std::string_view name, std::vector<ReportValue> values, bool printed) {
+  row_at({std::string(name)}, std::move(values), printed);
+}
+
+void ReportTable::row_at(const std::vector<std::string>& path, std::vector<ReportValue> values, bool printed) {
+  nlohmann::json& target = slot(path);
+  nlohmann::json object = record(std::move(values), printed);
+  if (target.is_object()) {
+    target.update(object);  // beside what the section already holds there (a sweep's arrays)
+  } else {
+    target = std::move(object);
+  }
+}
+
+void ReportTable::append(std::string_view name, std::vector<ReportValue> values, bool printed) {
+  nlohmann::json object = record(std::move(values), printed);
+  slot({std::string(name)}).push_back(std::move(object));
 }
 
 void ReportTable::print() const { table_.print(*text_); }

@@ -3,14 +3,13 @@
 #include <optional>
 #include <string>
 
-#include <kit/named_report_table.hpp>
 
 namespace kit {
 
-void report_work_precision(std::ostream& text, Report& report, std::string_view section,
+void report_work_precision(Report& report, std::string_view section,
                            const std::vector<WorkCurve>& curves) {
-  NamedReportTable table(text, report.json(section),
-                         {{"method", "method"}, {"tolerance", "tolerance", "{:.0e}"}, {"RHS evals", "evaluations"},
+  auto table = report.table(section,
+                            {{"method", "method"}, {"tolerance", "tolerance", "{:.0e}"}, {"RHS evals", "evaluations"},
                           {"accepted", "accepted"}, {"rejected", "rejected"}, {"max |y(T) - ref|", "error", "{:.2e}"},
                           {"time [s]", "seconds", "{:.2e}"}, {"", "finished"}});
   const auto count = [](const std::optional<long>& n) { return n ? ReportValue{*n} : ReportValue{}; };

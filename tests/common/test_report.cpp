@@ -45,3 +45,39 @@ TEST_CASE("format_value: yes/no for booleans by default, a dash for a missing va
   CHECK(kit::format_value(std::monostate{}, "{:.3e}") == "-");
   CHECK(kit::format_value(0.00123, "{:.2e}") == "1.23e-03");
 }
+
+TEST_CASE("a table can store rows by name, labels printed only, alongside what the section holds") {
+  std::ostringstream text;
+  nlohmann::json summary;
+  kit::Report report(text, summary);
+  report.json("critical/rk4") = {{"kept", 1}};
+  auto table = report.table("critical", {{"scheme", ""}, {"Δt [s]", "measured", "{:.2e}"}, {"", "hidden"},
+                                         {"ok", "match", "check"}});
+  table.row("rk4", {std::string("RK4"), 0.2828, 7L, true});
+  table.row("explicit_euler", {std::string("explicit Euler"), std::monostate{}, 8L, false}, false);  // JSON only
+  table.print();
+  CHECK(text.str() == "scheme    Δt [s]  ok\n--------------------\n   RK4  2.83e-01   ✓\n");
+  CHECK(summary["critical"]["rk4"]["measured"].get<double>() == 0.2828);
+  CHECK(summary["critical"]["rk4"]["hidden"].get<long>() == 7);
+  CHECK_FALSE(summary["critical"]["rk4"].contains(""));     // the label is not stored
+  CHECK(summary["critical"]["rk4"]["kept"].get<long>() == 1);  // a named row adds to its slot
+  CHECK(summary["critical"]["explicit_euler"]["measured"].is_null());
+  CHECK_THROWS_AS(table.row("midpoint", {1L}), std::invalid_argument);
+}
+
+TEST_CASE("named rows nest only when asked, and append builds an array per name") {
+  std::ostringstream text;
+  nlohmann::json summary;
+  kit::Report report(text, summary);
+  auto table = report.table("orders", {{"scheme", "scheme"}, {"order", "fitted", "{:.2f}"}});
+  table.row_at({"midpoint", "1e-03"}, {std::string("midpoint"), 1.9988});
+  table.row("in m/s", {std::string("literal"), 1.0}, false);
+  table.append("list", {std::string("a"), 1.0});
+  table.append("list", {std::string("b"), 2.0});
+  table.print();
+  CHECK(text.str() == "  scheme  order\n---------------\nmidpoint   2.00\n       a   1.00\n       b   2.00\n");
+  CHECK(summary["orders"]["midpoint"]["1e-03"]["scheme"] == "midpoint");
+  CHECK(summary["orders"]["in m/s"]["scheme"] == "literal");  // a slash in a name is not a path
+  REQUIRE(summary["orders"]["list"].size() == 2);
+  CHECK(summary["orders"]["list"][1]["fitted"].get<double>() == 2.0);
+}

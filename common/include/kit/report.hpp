@@ -5,7 +5,9 @@
 //     prints the sentence and sets summary["reference"]["max_error"] = e;
 //   auto table = report.table("samples", {{"k", "k"}, {"t [s]", "t", "{:.4f}"}});
 //   table.row({k, t});  ... table.print();
-//     prints the table and appends {"k": k, "t": t} to summary["samples"] for every row.
+//     prints the table and appends {"k": k, "t": t} to summary["samples"] for every row;
+//   table.row("rk4", {...}) stores a row by name instead, summary["samples"]["rk4"] = {...},
+//   and table.append("GSL rkck", {...}) appends it to the array summary["samples"]["GSL rkck"].
 #include <initializer_list>
 #include <ostream>
 #include <string>
@@ -32,7 +34,8 @@ struct Field {
 /// A column of a reported table.
 struct Column {
   std::string header;          ///< printed header with unit, e.g. "Δt [s]"; empty: JSON only
-  std::string key;             ///< JSON key of the value in every row object
+  std::string key;             ///< JSON key of the value in every row object; empty: printed only
+                               ///< (a label such as a display name, when rows are stored by name)
   std::string format = "{}";   ///< fmt format of the printed cell: "{:.3e}", "{:.4f}"; "check" prints ✓/✗,
                                ///< "yes/no" prints yes/no
 };
@@ -51,11 +54,21 @@ class ReportTable {
   /// One row, a value per column, in the columns' order. `printed` = false keeps the row out of
   /// the text (a thinned table) but not out of the JSON.
   void row(std::vector<ReportValue> values, bool printed = true);
+  /// One row stored by name, section[name][key] = value for each column (beside what the object
+  /// there already holds). The name is one key, whatever it contains ("stiff, ω = 1e6 rad/s").
+  void row(std::string_view name, std::vector<ReportValue> values, bool printed = true);
+  /// The same at a nested place: row_at({"rk4", "1e-03"}, …) stores section["rk4"]["1e-03"].
+  void row_at(const std::vector<std::string>& path, std::vector<ReportValue> values, bool printed = true);
+  /// One row appended to the array section[name].
+  void append(std::string_view name, std::vector<ReportValue> values, bool printed = true);
   void print() const;
 
  private:
   friend class Report;
   ReportTable(std::ostream& text, nlohmann::json& rows, std::vector<Column> columns);
+  /// The row's JSON object; its printed cells go to the table when `printed`.
+  nlohmann::json record(std::vector<ReportValue> values, bool printed);
+  nlohmann::json& slot(const std::vector<std::string>& path);
   std::ostream* text_;
   nlohmann::json* rows_;
   std::vector<Column> columns_;

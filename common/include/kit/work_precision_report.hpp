@@ -12,7 +12,7 @@
 
 namespace kit {
 
-void report_work_precision(std::ostream& text, Report& report, std::string_view section,
+void report_work_precision(Report& report, std::string_view section,
                            const std::vector<WorkCurve>& curves);
 
 }  // namespace kit
