@@ -187,7 +187,8 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
     for (const Series& series : panel.series) {
       const int block = index++;
       if (!drawable(series, panel.logx, panel.logy)) {
-        if (!series.title.empty()) empty.push_back(series.title);
+        // An empty series has nothing to hide; one whose points cannot be drawn is named.
+        if (!series.title.empty() && !series.x.empty()) empty.push_back(series.title);
         continue;
       }
       clauses.push_back(fmt::format("data index {} using {}:{} with {}{} {}", block, x, y, series.with,
