@@ -84,12 +84,12 @@ Drifts energy_over_periods(kit::ChapterApp& app, const kit::Spring& spring, cons
                    "steps):\n",
                    {{"periods", periods}, {"omega_dt", 0.1}, {"steps", steps}});
   auto table = app.report().table("energy", {{"scheme", "scheme"}, {"max |E/E0 - 1|", "max_drift", "{:.2e}"},
-                               {"E/E0 at the end", "final_ratio", "{:.3e}"}});
+      {"E/E0 at the end", "final_ratio", "{:.3e}"}, {"diverged at t [s]", "diverged_at", "{:.4g}"}});
   Drifts drifts;
   const auto energy = [&](const Vec2& u) { return spring.energy(u); };
   for (Scheme s : kit::all_schemes) {
     const auto& d = drifts[s] = kit::energy_drift(u0, dt, steps, kit::spring_stepper(s, spring, dt), energy);
-    table.row(kit::key(s), {kit::name(s), d.max_drift, d.final_ratio});
+    table.row(kit::key(s), {kit::name(s), d.max_drift, d.final_ratio, d.diverged_at ? *d.diverged_at : kit::ReportValue{}});
   }
   table.print();
   return drifts;

@@ -64,8 +64,10 @@ std::vector<std::size_t> plotted_indices(const Series& s) {
 }
 
 bool drawable(const Series& s, bool logx, bool logy) {
+  const auto on_log_axis = [](double v) { return v >= log_axis_min && v <= log_axis_max; };
   for (std::size_t i = 0; i < s.x.size(); ++i)
-    if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && (!logx || s.x[i] > 0) && (!logy || s.y[i] > 0)) return true;
+    if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && (!logx || on_log_axis(s.x[i])) && (!logy || on_log_axis(s.y[i])))
+      return true;
   return false;
 }
 
@@ -182,7 +184,10 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
     for (const auto& command : panel.commands) gp << command << "\n";
     // A series with no point to draw (all undefined, or none positive on a log axis) is left
     // out of the plot and named in a label, since gnuplot refuses a plot with nothing defined.
-    const std::string x = panel.logx ? "($1>0?$1:NaN)" : "1", y = panel.logy ? "($2>0?$2:NaN)" : "2";
+    // On a log axis gnuplot cannot span the whole double range (its autoscaled ends underflow
+    // to 0 near 1e-308), so values outside [1e-280, 1e280] are left undefined there.
+    const std::string x = panel.logx ? "(($1>=1e-280&&$1<=1e280)?$1:NaN)" : "1";
+    const std::string y = panel.logy ? "(($2>=1e-280&&$2<=1e280)?$2:NaN)" : "2";
     std::vector<std::string> clauses, empty;
     for (const Series& series : panel.series) {
       const int block = index++;

@@ -1,5 +1,6 @@
 #include <kit/report.hpp>
 
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/args.h>
@@ -13,13 +14,16 @@ std::string format_value(const ReportValue& value, const std::string& format) {
     if (format == "check") return *b ? "✓" : "✗";
     return *b ? "yes" : "no";
   }
+  if (const double* d = std::get_if<double>(&value); d && !std::isfinite(*d))
+    return std::isnan(*d) ? "undefined" : (*d > 0 ? "overflow" : "-overflow");  // never "inf" or "-nan"
+  if (const std::string* text = std::get_if<std::string>(&value)) return *text;  // a label ignores number specs
   return std::visit(
       [&](const auto& v) -> std::string {
         using V = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<V, std::monostate> || std::is_same_v<V, bool>) {
-          return {};
-        } else {
+        if constexpr (std::is_same_v<V, long> || std::is_same_v<V, double>) {
           return fmt::format(fmt::runtime(format), v);
+        } else {
+          return {};
         }
       },
       value);

@@ -1,4 +1,5 @@
 // The report layer: a printed number and its JSON twin come from one call.
+#include <cmath>
 #include <sstream>
 
 #include <catch2/catch.hpp>
@@ -44,6 +45,9 @@ TEST_CASE("format_value: yes/no for booleans by default, a dash for a missing va
   CHECK(kit::format_value(false, "check") == "✗");
   CHECK(kit::format_value(std::monostate{}, "{:.3e}") == "-");
   CHECK(kit::format_value(0.00123, "{:.2e}") == "1.23e-03");
+  CHECK(kit::format_value(INFINITY, "{:.2e}") == "overflow");
+  CHECK(kit::format_value(std::nan(""), "{:.2e}") == "undefined");
+  CHECK(kit::format_value(std::string("diverged"), "{:.2e}") == "diverged");
 }
 
 TEST_CASE("a table can store rows by name, labels printed only, alongside what the section holds") {

@@ -90,7 +90,10 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options);
 inline constexpr std::size_t max_plotted_points = 4000;
 /// The indices of `s` written to the data file (all of them, or the thinned extremes).
 std::vector<std::size_t> plotted_indices(const Series& s);
-/// True when `s` has a point gnuplot can draw: finite, and positive on a log axis.
+/// What a log axis can show: gnuplot's autoscaled ends underflow to 0 near 1e-308.
+inline constexpr double log_axis_min = 1e-280, log_axis_max = 1e280;
+/// True when `s` has a point gnuplot can draw: finite, and in [log_axis_min, log_axis_max] on a
+/// log axis.
 bool drawable(const Series& s, bool logx, bool logy);
 
 /// The gnuplot script for `figure` reading `data_file` (exposed for tests).

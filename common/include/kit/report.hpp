@@ -40,7 +40,8 @@ struct Column {
                                ///< "yes/no" prints yes/no
 };
 
-/// The text of `value` as `format` prints it (see Column::format).
+/// The text of `value` as `format` prints it (see Column::format). A string prints as it is
+/// whatever the format; a non-finite double prints "overflow" or "undefined", never inf or nan.
 std::string format_value(const ReportValue& value, const std::string& format);
 /// The JSON of `value`.
 nlohmann::json to_json(const ReportValue& value);
