@@ -89,7 +89,8 @@ Drifts energy_over_periods(kit::ChapterApp& app, const kit::Spring& spring, cons
   const auto energy = [&](const Vec2& u) { return spring.energy(u); };
   for (Scheme s : kit::all_schemes) {
     const auto& d = drifts[s] = kit::energy_drift(u0, dt, steps, kit::spring_stepper(s, spring, dt), energy);
-    table.row(kit::key(s), {kit::name(s), d.max_drift, d.final_ratio, d.diverged_at ? *d.diverged_at : kit::ReportValue{}});
+    const kit::ReportValue diverged = d.diverged_at ? kit::ReportValue{*d.diverged_at} : kit::ReportValue{};
+    table.row(kit::key(s), {kit::name(s), d.max_drift, d.final_ratio, diverged});
   }
   table.print();
   return drifts;
