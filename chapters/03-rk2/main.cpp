@@ -89,8 +89,7 @@ Drifts energy_over_periods(kit::ChapterApp& app, const kit::Spring& spring, cons
   const auto energy = [&](const Vec2& u) { return spring.energy(u); };
   for (Scheme s : kit::all_schemes) {
     const auto& d = drifts[s] = kit::energy_drift(u0, dt, steps, kit::spring_stepper(s, spring, dt), energy);
-    const kit::ReportValue diverged = d.diverged_at ? kit::ReportValue{*d.diverged_at} : kit::ReportValue{};
-    table.row(kit::key(s), {kit::name(s), d.max_drift, d.final_ratio, diverged});
+    table.row(kit::key(s), {kit::name(s), d.max_drift, d.final_ratio, kit::optional_value(d.diverged_at)});
   }
   table.print();
   return drifts;

@@ -29,6 +29,15 @@ std::string format_value(const ReportValue& value, const std::string& format) {
       value);
 }
 
+ReportValue optional_value(const std::optional<double>& value) {
+  if (value) return *value;
+  return std::monostate{};
+}
+ReportValue optional_value(const std::optional<long>& value) {
+  if (value) return *value;
+  return std::monostate{};
+}
+
 nlohmann::json to_json(const ReportValue& value) {
   return std::visit(
       [](const auto& v) -> nlohmann::json {

@@ -12,11 +12,11 @@ void report_work_precision(Report& report, std::string_view section,
                             {{"method", "method"}, {"tolerance", "tolerance", "{:.0e}"}, {"RHS evals", "evaluations"},
                           {"accepted", "accepted"}, {"rejected", "rejected"}, {"max |y(T) - ref|", "error", "{:.2e}"},
                           {"time [s]", "seconds", "{:.2e}"}, {"", "finished"}});
-  const auto count = [](const std::optional<long>& n) { return n ? ReportValue{*n} : ReportValue{}; };
+
   long unfinished = 0;
   for (const WorkCurve& c : curves) {
     for (const WorkPoint& w : c.points) {
-      table.append(c.label, {c.label, w.tolerance, w.rhs_evals, count(w.accepted), count(w.rejected), w.error,
+      table.append(c.label, {c.label, w.tolerance, w.rhs_evals, optional_value(w.accepted), optional_value(w.rejected), w.error,
                              w.seconds, w.finished});
       if (!w.finished) ++unfinished;
     }

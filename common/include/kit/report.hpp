@@ -9,6 +9,7 @@
 //   table.row("rk4", {...}) stores a row by name instead, summary["samples"]["rk4"] = {...},
 //   and table.append("GSL rkck", {...}) appends it to the array summary["samples"]["GSL rkck"].
 #include <initializer_list>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -24,6 +25,10 @@ namespace kit {
 /// One reported value. A long stays a whole number in the JSON; std::monostate prints "-" and
 /// is stored as null (a count a peer does not report, say).
 using ReportValue = std::variant<std::monostate, bool, long, double, std::string>;
+
+/// The value, or "-" and null when there is none (a step count a peer does not report).
+ReportValue optional_value(const std::optional<double>& value);
+ReportValue optional_value(const std::optional<long>& value);
 
 /// A named value: `key` is its JSON key and its name in a sentence's {key:format} field.
 struct Field {
