@@ -41,6 +41,8 @@ ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::st
   app_.add_flag("--show", options_.show, "also open each figure in a window when a display exists");
   app_.add_flag("--json", options_.json, "print one JSON summary object on stdout, and nothing else");
   app_.add_flag("--quiet", options_.quiet, "print nothing on stdout");
+  // For the flag-table test: every numeric flag with its range, as JSON; not in --help.
+  app_.add_flag("--flag-table", flag_table_requested_, "")->group("");
   summary_["chapter"] = chapter_;
 }
 
@@ -60,6 +62,8 @@ void ChapterApp::add_real(const std::string& flag, double& value, const std::str
       ->type_name("REAL");
   const std::string key = flag.substr(flag.find_first_not_of('-'));
   record_parameters_.push_back([this, key, &value] { summary_["parameters"][key] = value; });
+  flag_table_.push_back({{"flag", flag}, {"kind", "real"}, {"default", value}, {"lo", range.lo}, {"hi", range.hi},
+                         {"lo_open", range.lo_open}, {"hi_open", range.hi_open}, {"nonzero", range.nonzero}});
 }
 
 void ChapterApp::add_count(const std::string& flag, long& value, const std::string& help, long lo, long hi) {
@@ -76,6 +80,7 @@ void ChapterApp::add_count(const std::string& flag, long& value, const std::stri
       ->type_name("N");
   const std::string key = flag.substr(flag.find_first_not_of('-'));
   record_parameters_.push_back([this, key, &value] { summary_["parameters"][key] = value; });
+  flag_table_.push_back({{"flag", flag}, {"kind", "count"}, {"default", value}, {"lo", lo}, {"hi", hi}});
 }
 
 std::ostream& ChapterApp::text() {
@@ -110,6 +115,10 @@ int ChapterApp::run(int argc, const char* const* argv, const std::function<void(
     std::cerr << chapter_ << ": error: " << e.what() << "\nRun '" << chapter_
               << " --help' to see every flag, its unit and its allowed range.\n";
     return exit_code::usage;
+  }
+  if (flag_table_requested_) {
+    std::cout << flag_table_.dump(2) << "\n";
+    return exit_code::ok;
   }
   for (const auto& record : record_parameters_) record();
   report_ = Report(text(), summary_);

@@ -77,6 +77,8 @@ class ChapterApp {
   std::vector<std::function<void()>> record_parameters_;
   std::ostream null_{nullptr};
   Report report_{null_, summary_};  // bound to text() once the flags are parsed
+  nlohmann::json flag_table_ = nlohmann::json::array();  // every numeric flag and its range
+  bool flag_table_requested_ = false;
 };
 
 }  // namespace kit

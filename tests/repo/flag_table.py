@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Valid input never ends in exit 1: every numeric flag of every chapter, with bad and extreme
+values, ends in a reported result (exit 0, with a JSON summary) or a refusal (exit 2), within a
+time bound.
+
+For each flag (from the chapter's own `--flag-table`): -1, 0, NaN, ±Inf, 1e308, text, empty,
+the two ends of its range (just inside an open end), one past them for whole numbers; then every
+flag at its lower end at once, every flag at its upper end at once, and a fixed sample of pairs
+of extremes. New chapters and new flags are covered with no extra work.
+
+Usage: flag_table.py BIN_DIR [--seconds S]
+"""
+import concurrent.futures
+import itertools
+import json
+import math
+import pathlib
+import random
+import subprocess
+import sys
+
+LIMIT = 1e300  # a range end beyond this is "no bound": its extremes are 1e308 and -1e308
+
+
+def inside(value, is_open, toward):
+    """A value just inside an open end of a range (toward +1 or -1)."""
+    if not is_open:
+        return value
+    step = max(abs(value) * 1e-9, 1e-300)
+    return value + toward * step
+
+
+def ends(flag):
+    """The extreme valid values of a flag, as command-line text."""
+    if flag["kind"] == "count":
+        return [str(int(flag["lo"])), str(int(flag["hi"]))]
+    values = []
+    if abs(flag["lo"]) < LIMIT:
+        values.append(inside(flag["lo"], flag.get("lo_open"), +1))
+    if abs(flag["hi"]) < LIMIT:
+        values.append(inside(flag["hi"], flag.get("hi_open"), -1))
+    if flag.get("nonzero") and flag["lo"] < 0 < flag["hi"]:
+        values += [1e-300, -1e-300]
+    return [repr(v) for v in values]
+
+
+def singles(flag):
+    values = ["-1", "0", "nan", "inf", "-inf", "1e308", "-1e308", "text", ""] + ends(flag)
+    if flag["kind"] == "count":
+        values += [str(int(flag["lo"]) - 1), str(int(flag["hi"]) + 1), "2.5"]
+    return [[(flag["flag"], v)] for v in dict.fromkeys(values)]
+
+
+def cases_for(table):
+    cases = [c for flag in table for c in singles(flag)]
+    lows = [(f["flag"], ends(f)[0]) for f in table if ends(f)]
+    highs = [(f["flag"], ends(f)[-1]) for f in table if ends(f)]
+    cases += [lows, highs]
+    pairs = [[(a["flag"], x), (b["flag"], y)] for a, b in itertools.combinations(table, 2)
+             for x in ends(a) for y in ends(b)]
+    cases += random.Random(20261122).sample(pairs, min(len(pairs), 24))
+    return cases
+
+
+def run(binary, case, seconds):
+    args = [str(binary), "--no-plot", "--json"]
+    for flag, value in case:
+        args += [flag, value]
+    words = " ".join(f"{f} {v!r}" for f, v in case)
+    try:
+        done = subprocess.run(args, capture_output=True, text=True, timeout=seconds)
+    except subprocess.TimeoutExpired:
+        return f"{binary.name} {words}: still running after {seconds} s"
+    if done.returncode == 2:
+        if not done.stderr.strip():
+            return f"{binary.name} {words}: exit 2 without a message"
+        return None
+    if done.returncode != 0:
+        return f"{binary.name} {words}: exit {done.returncode}: {done.stderr.strip()[:300]}"
+    try:
+        summary = json.loads(done.stdout)
+    except ValueError:
+        return f"{binary.name} {words}: exit 0 but stdout is not one JSON object: {done.stdout[:200]!r}"
+    text = json.dumps(summary)
+    if "NaN" in text or "Infinity" in text:
+        return f"{binary.name} {words}: the summary holds NaN or Infinity"
+    return None
+
+
+def main(argv):
+    bin_dir = pathlib.Path(argv[1])
+    seconds = float(argv[3]) if len(argv) > 3 and argv[2] == "--seconds" else 120.0
+    binaries = sorted(p for p in bin_dir.iterdir() if p.is_file() and p.name[:2].isdigit())
+    jobs = []
+    for binary in binaries:
+        table = json.loads(subprocess.run([str(binary), "--flag-table"], capture_output=True, text=True,
+                                          check=True).stdout)
+        jobs += [(binary, case) for case in cases_for(table)]
+    problems = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        for problem in pool.map(lambda job: run(job[0], job[1], seconds), jobs):
+            if problem:
+                problems.append(problem)
+                print(problem, flush=True)
+    print(f"{len(jobs)} runs of {len(binaries)} chapters; {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
