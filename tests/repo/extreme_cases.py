@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""Regression cases: requests that once ended in exit 1, a hang, a shell command run, or a
+half-written file. Each runs as a user would, figures included, and must end in a reported
+result (exit 0) or a refusal (exit 2), print no inf or nan, and leave no temporary file.
+
+Usage: extreme_cases.py BIN_DIR WORK_DIR
+"""
+import pathlib
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+CASES = [  # (chapter, flags, expected exit code)
+    ("01-free-fall", ["--x0", "3.7", "--v0", "-1.3", "--g", "-4.2", "--dt", "0.013", "--t-end", "6.721"], 0),
+    ("01-free-fall", ["--t-end", "10000", "--dt", "0.01", "--dt-min", "0.001"], 0),
+    ("01-free-fall", ["--dt", "1e-300", "--t-end", "1"], 2),
+    ("02-spring-stability", ["--t-end", "1e5", "--dt", "0.1"], 0),
+    ("02-spring-stability", ["--stiffness", "1e15", "--mass", "1e-6", "--damping", "1e12"], 0),
+    ("02-spring-stability", ["--dt", "1e-16", "--t-end", "10000"], 2),
+    ("03-rk2", ["--t-end", "1e-300"], 0),
+    ("03-rk2", ["--damping", "1e12"], 0),
+    ("03-rk2", ["--stiffness", "1e-6", "--mass", "1e6", "--t-end", "1e4"], 0),
+    ("03-rk2", ["--periods", "100000"], 0),
+    ("04-adaptive-rk", ["--mu", "10000"], 0),
+]
+
+
+def leftovers(folder):
+    return [p.name for p in pathlib.Path(folder).rglob("*") if ".tmp-" in p.name]
+
+
+def main(argv):
+    bin_dir, work = pathlib.Path(argv[1]), pathlib.Path(argv[2])
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    problems = []
+    for number, (chapter, flags, expected) in enumerate(CASES):
+        out = work / f"case{number}"
+        started = time.monotonic()
+        done = subprocess.run([str(bin_dir / chapter), "--format", "png", "--out", str(out), *flags],
+                              capture_output=True, text=True, timeout=600)
+        what = f"{chapter} {' '.join(flags)}"
+        print(f"exit {done.returncode} in {time.monotonic() - started:.1f} s: {what}", flush=True)
+        if done.returncode != expected:
+            problems.append(f"{what}: exit {done.returncode}, expected {expected}: {done.stderr.strip()[:300]}")
+        if re.search(r"(?<![\w-])-?(inf|nan)\b", done.stdout, re.IGNORECASE):
+            problems.append(f"{what}: prints inf or nan")
+        if expected == 2 and out.exists():
+            problems.append(f"{what}: a refused run created {out}")
+        if leftovers(out):
+            problems.append(f"{what}: left {leftovers(out)}")
+
+    # Relative --out, and --out with shell syntax: written literally, nothing run.
+    for name in ["relative-out", "$(touch injected)`touch injected2`"]:
+        done = subprocess.run([str((bin_dir / "01-free-fall").resolve()), "--quiet", "--format", "png", "--out", name],
+                              cwd=work, capture_output=True, text=True)
+        if done.returncode != 0 or not (work / name / "trajectories.png").exists():
+            problems.append(f"--out {name!r}: exit {done.returncode}, figures missing: {done.stderr.strip()[:300]}")
+    if (work / "injected").exists() or (work / "injected2").exists():
+        problems.append("--out with $(...) or backticks ran a shell command")
+
+    # A bad --out is refused before anything is computed.
+    (work / "a-file").write_text("x")
+    for bad in ["", str(work / "a-file"), str(work / "a-file" / "below")]:
+        done = subprocess.run([str(bin_dir / "04-adaptive-rk"), "--out", bad], capture_output=True, text=True, timeout=60)
+        if done.returncode != 2 or "--out" not in done.stderr:
+            problems.append(f"--out {bad!r}: exit {done.returncode}, expected 2 naming --out")
+
+    # A run stopped by a timeout (SIGTERM) while writing figures leaves no temporary file.
+    for delay in (0.3, 0.6, 0.9, 1.2):
+        out = work / f"killed-{delay}"
+        process = subprocess.Popen([str(bin_dir / "02-spring-stability"), "--quiet", "--out", str(out)],
+                                   start_new_session=True)
+        time.sleep(delay)
+        process.send_signal(signal.SIGTERM)
+        process.wait(timeout=60)
+        if out.exists() and leftovers(out):
+            problems.append(f"killed after {delay} s: left {leftovers(out)}")
+
+    for p in problems:
+        print(p, file=sys.stderr)
+    print(f"{len(CASES)} cases; {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
