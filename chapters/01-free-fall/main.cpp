@@ -138,9 +138,10 @@ int main(int argc, char** argv) {
   kit::add_free_fall_flags(app, s.fall, s.dt, s.t_end, s.dt_min);
   return app.run(argc, argv, [&] {
     the_system(app.report(), s);
-    const auto runs = loop_and_matrix_forms(app.report(), s);
-    const auto o = orders(app.report(), s);
-    const auto r = roundoff(app.report(), s);
-    figures(app, s, runs, o, r);
+    // Each section runs as soon as the exercises it needs are written (ex 1.1-1.3).
+    const auto runs = app.section("loop and matrix", [&] { return loop_and_matrix_forms(app.report(), s); });
+    const auto o = app.section("orders", [&] { return orders(app.report(), s); });
+    const auto r = app.section("round-off", [&] { return roundoff(app.report(), s); });
+    if (runs && o && r) figures(app, s, *runs, *o, *r);
   });
 }

@@ -139,11 +139,11 @@ int main(int argc, char** argv) {
   app.add_real("--t-end", s.t_end, "final time T [s], a whole number of steps", kit::positive(1e5));
   app.add_divergence_flag();
   return app.run(argc, argv, [&] {
-    the_system(app.report(), s);
-    const auto runs = every_scheme(app, s);
-    critical_steps(app.report(), s);
-    implicit_damping(app.report(), s);
-    stiff_springs(app.report(), s);
-    figures(app, s, runs);
+    the_system(app.report(), s);  // each section runs once its exercises are written
+    const auto runs = app.section("every scheme", [&] { return every_scheme(app, s); });
+    app.section("critical steps", [&] { critical_steps(app.report(), s); });
+    app.section("implicit damping", [&] { implicit_damping(app.report(), s); });
+    app.section("stiff springs", [&] { stiff_springs(app.report(), s); });
+    if (runs) app.section("figures", [&] { figures(app, s, *runs); });
   });
 }

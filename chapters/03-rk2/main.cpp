@@ -139,10 +139,11 @@ int main(int argc, char** argv) {
   return app.run(argc, argv, [&] {
     kit::require_motion(spring, u0);
     const kit::SweepHorizon horizon = kit::sweep_horizon(spring.omega(), t_end);
-    free_fall_is_exact(app.report(), free_fall_steps);
-    const Sweeps sweeps = orders_on_the_spring(app, spring, u0, t_end, horizon);
-    const Drifts drifts = energy_over_periods(app, spring, u0, periods);
-    what_accuracy_costs(app, sweeps);
-    if (!app.options().no_plot) figures(app, sweeps, drifts, horizon.t, periods);
+    app.section("free fall", [&] { free_fall_is_exact(app.report(), free_fall_steps); });  // ex 3.1
+    const auto sweeps = app.section("orders", [&] { return orders_on_the_spring(app, spring, u0, t_end,
+                                                                                 horizon); });
+    const auto drifts = app.section("energy", [&] { return energy_over_periods(app, spring, u0, periods); });
+    if (sweeps) app.section("cost", [&] { what_accuracy_costs(app, *sweeps); });
+    if (!app.options().no_plot && sweeps && drifts) figures(app, *sweeps, *drifts, horizon.t, periods);
   });
 }

@@ -120,8 +120,7 @@ int main(int argc, char** argv) {
   std::string problem = "arenstorf", method = "dopri5";
   kit::ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR,
                       "Chapter 4: adaptive Runge-Kutta against GSL and Boost.Odeint");
-  app.cli()
-      .add_option("--problem", problem, "arenstorf (orbit, T = 17.07) or kepler (eccentric orbit, T = 2π)")
+  app.cli().add_option("--problem", problem, "arenstorf (orbit, T = 17.07) or kepler (ellipse, T = 2π)")
       ->check(CLI::IsMember({"arenstorf", "kepler"}));
   app.cli()
       .add_option("--method", method, "the detailed run: dopri5 (production), cash-karp or bogacki-shampine "
@@ -140,11 +139,12 @@ int main(int argc, char** argv) {
       throw kit::UsageError(fmt::format("--emin {} must be below --emax {}", e_min, e_max));
     const kit::OrbitProblem p = kit::orbit_problem(problem, eccentricity);
     const kit::EmbeddedOptions options{rtol, atol, h0, 5'000'000};
-    tableaus_checked(app.report());
-    const Run detail = one_run_in_detail(app.report(), p, method, options);
-    step_doubling_and_its_trap(app.report(), p, e_min, e_max, h0);
-    const Curves curves = work_against_precision(app, p, h0);
-    const kit::StiffnessRun vdp = stiffness(app.report(), mu);
-    if (!app.options().no_plot) figures(app, p, detail, options, curves, vdp);
+    tableaus_checked(app.report());  // each section runs once its exercises (4.1–4.3) are written
+    const auto detail = app.section("one run", [&] { return one_run_in_detail(app.report(), p, method,
+                                                                              options); });
+    app.section("step doubling", [&] { step_doubling_and_its_trap(app.report(), p, e_min, e_max, h0); });
+    const auto curves = app.section("work-precision", [&] { return work_against_precision(app, p, h0); });
+    const kit::StiffnessRun vdp = stiffness(app.report(), mu);  // the kit's DOPRI5: no exercise needed
+    if (!app.options().no_plot && detail && curves) figures(app, p, *detail, options, *curves, vdp);
   });
 }

@@ -7,6 +7,8 @@
 //  - --json prints one summary object on stdout and nothing else;
 //  - a diverging simulation is a reported result (exit 0, or 3 under --fail-on-divergence).
 #include <functional>
+#include <optional>
+#include <type_traits>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include <kit/figure.hpp>
+#include <kit/not_implemented.hpp>
 #include <kit/real_range.hpp>
 #include <kit/report.hpp>
 #include <kit/usage.hpp>
@@ -63,6 +66,30 @@ class ChapterApp {
   /// lists its files in the summary.
   void figure(const Figure& figure);
 
+  /// Runs one section of the lecture, `fn()`. When it needs an exercise the student has not
+  /// written yet (kit::NotImplemented), the chapter says which section waits for which exercise
+  /// and goes on with the next one: a student sees every part that their code already runs.
+  /// Returns fn's result, or nullopt when skipped (true/false for a section that returns nothing).
+  template <class F>
+  auto section(const std::string& title, F&& fn) {
+    using R = std::invoke_result_t<F>;
+    try {
+      if constexpr (std::is_void_v<R>) {
+        fn();
+        return true;
+      } else {
+        return std::optional<R>(fn());
+      }
+    } catch (const NotImplemented& waiting) {
+      skipped(title, waiting.what());
+      if constexpr (std::is_void_v<R>) {
+        return false;
+      } else {
+        return std::optional<R>();
+      }
+    }
+  }
+
   /// Adds --fail-on-divergence, for chapters whose runs can blow up.
   void add_divergence_flag();
   /// Records that a run diverged: a result, listed under "divergences" in the summary. The
@@ -70,6 +97,8 @@ class ChapterApp {
   void diverged(const std::string& run, const std::string& what);
 
  private:
+  void skipped(const std::string& title, const std::string& why);
+
   std::string chapter_;
   CLI::App app_;
   CommonOptions options_;
