@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
 """Write the student edition of the kit: everything a student needs, and no solution.
 
-  student_edition.py KIT_ROOT DESTINATION [--without-production]
+  student_edition.py KIT_ROOT DESTINATION
 
 The edition is the kit's tracked files without solutions/ (and without .git): exercises/ is
 the default implementation, `./kit run`, `./kit test` (the tests that apply without solutions)
-and `./kit grade MYCOPY` work in it. The kit's own production integrators solve some exercises
-in another form; --without-production leaves them out (see PRODUCTION below), and the chapters
-then run those parts on the student's own methods.
+and `./kit grade MYCOPY` work in it. The kit's own production code solves some exercises in
+another form (PRODUCTION below, listed in the edition's README); an edition without it is not
+offered yet, since chapter 4 and the work-precision harness are built on the production DOPRI5.
 
 `check` mode (used by the test): student_edition.py check KIT_ROOT EDITION
 exits 1 when a line of any solution region appears in any file of the edition.
@@ -24,15 +24,16 @@ import exercises  # noqa: E402
 
 # Production code in common/ that solves an exercise another way: what it gives away.
 PRODUCTION = {
-    "common/include/kit/dopri5.hpp": "a Dormand-Prince step and its driver (ex 4.2's stages for one tableau, ex 4.3's law in use)",
-    "common/include/kit/pi_step_control.hpp": "the PI step-size law of ex 4.3, in a latency-conscious form",
-    "tests/common/test_dopri5.cpp": "tests of the production DOPRI5, with dopri5.f's step-size formula written out",
-    "tests/bench/bench_adaptive.cpp": "the benchmark of the production DOPRI5",
+    "common/include/kit/dopri5.hpp": "ex 4.2 for one tableau (the Dormand-Prince stages), and ex 4.3 in use",
+    "common/include/kit/pi_step_control.hpp": "ex 4.3, the PI step-size law, in a latency-conscious form",
+    "tests/common/test_dopri5.cpp": "ex 4.3: dopri5.f's step-size formula written out",
+    "common/src/stability.cpp": "part of ex 2.3: the step matrix of symplectic Euler on the spring",
 }
 BANNER = """
 > **Student edition.** This copy has no `solutions/`: `exercises/` is the default
 > implementation. Copy it (`cp -r exercises ~/my-kit-work`), work in your copy, and check it
 > with `./kit grade ~/my-kit-work`. `./kit test` runs the tests that apply without solutions.
+> The kit's own production code solves some exercises another way: {given_away}.
 """
 MIN_LINE = 20  # shorter solution lines ("return out;") are too common to mean anything
 # A line of arithmetic (a * b, u + dt, …): the method itself, not bookkeeping such as
@@ -48,12 +49,11 @@ def tracked_files(root):
             if p.is_file() and not {".git", "build"} & set(p.relative_to(root).parts)]
 
 
-def write_edition(root, destination, without_production):
+def write_edition(root, destination):
     if destination.exists():
         sys.exit(f"student-edition: {destination} exists already; name a new folder")
-    left_out = set(PRODUCTION) if without_production else set()
     for rel in tracked_files(root):
-        if rel.startswith("solutions/") or rel in left_out or not (root / rel).is_file():
+        if rel.startswith("solutions/") or not (root / rel).is_file():
             continue
         target = destination / rel
         target.parent.mkdir(parents=True, exist_ok=True)
@@ -64,13 +64,13 @@ def write_edition(root, destination, without_production):
         if preset.get("cacheVariables", {}).get("KIT_IMPL") == "solutions":
             preset["cacheVariables"]["KIT_IMPL"] = "exercises"
     presets.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
-    (destination / "EDITION").write_text("student" + (" without-production" if without_production else "") + "\n",
-                                         encoding="utf-8")
+    (destination / "EDITION").write_text("student\n", encoding="utf-8")
     readme = destination / "README.md"
     text = readme.read_text(encoding="utf-8")
     title_end = text.index("\n") + 1
-    readme.write_text(text[:title_end] + BANNER + text[title_end:], encoding="utf-8")
-    print(f"student edition written to {destination}" + (" (without the production integrators)" if left_out else ""))
+    given_away = "; ".join(f"`{path}` ({what})" for path, what in PRODUCTION.items())
+    readme.write_text(text[:title_end] + BANNER.format(given_away=given_away) + text[title_end:], encoding="utf-8")
+    print(f"student edition written to {destination}")
 
 
 def solution_lines(solutions):
@@ -111,12 +111,10 @@ def check(root, edition):
 def main(argv):
     if len(argv) == 4 and argv[1] == "check":
         return check(pathlib.Path(argv[2]).resolve(), pathlib.Path(argv[3]).resolve())
-    flags = [a for a in argv[1:] if a.startswith("--")]
-    args = [a for a in argv[1:] if not a.startswith("--")]
-    if len(args) != 2 or set(flags) - {"--without-production"}:
+    if len(argv) != 3:
         print(__doc__, file=sys.stderr)
         return 2
-    write_edition(pathlib.Path(args[0]).resolve(), pathlib.Path(args[1]).resolve(), "--without-production" in flags)
+    write_edition(pathlib.Path(argv[1]).resolve(), pathlib.Path(argv[2]).resolve())
     return 0
 
 

@@ -16,15 +16,13 @@ def exercise_files(points):
 
 
 def snapshot(folder, allowed, destination):
-    """Copies the allowed files of `folder` into `destination` (emptied first).
+    """Makes `destination` hold exactly the allowed files of `folder`.
     Returns (copied names, missing names, ignored relative paths with the reason)."""
     folder, destination = pathlib.Path(folder), pathlib.Path(destination)
-    if destination.exists():
-        shutil.rmtree(destination)
-    destination.mkdir(parents=True)
+    destination.mkdir(parents=True, exist_ok=True)
     copied, missing, ignored = [], [], []
     for name in allowed:
-        source = folder / name
+        source, target = folder / name, destination / name
         if source.is_symlink():
             ignored.append((name, "a symbolic link: only regular files are graded"))
             missing.append(name)
@@ -34,8 +32,17 @@ def snapshot(folder, allowed, destination):
             ignored.append((name, f"larger than {MAX_FILE_BYTES} bytes"))
             missing.append(name)
         else:
-            (destination / name).write_bytes(source.read_bytes())
+            content = source.read_bytes()
+            # Rewritten only when it changed: a regrade then recompiles only what changed.
+            if not target.is_file() or target.read_bytes() != content:
+                target.write_bytes(content)
             copied.append(name)
+    for stale in destination.iterdir():  # what the folder no longer provides
+        if stale.name not in copied:
+            if stale.is_dir() and not stale.is_symlink():
+                shutil.rmtree(stale)
+            else:
+                stale.unlink()
     allowed_set = set(allowed)
     for path in sorted(folder.rglob("*")):
         rel = path.relative_to(folder).as_posix()
