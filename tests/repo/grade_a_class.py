@@ -17,7 +17,8 @@ The six submissions, generated from the solution markers:
     implicit_euler.hpp  reads another submission's file
   and it ships a fake catch2/catch.hpp and kit/state.hpp that would make every check pass.
 Checks: class.csv is right; every attacked item scores 0 (integrity, compile error or fail);
-the untouched items still score; nothing outside the grade trees changed.
+the untouched items still score; the compile error names the student's file and line;
+regrading writes the same reports byte for byte; nothing outside the grade trees changed.
 
 Usage: grade_a_class.py WORK_DIR
 """
@@ -25,6 +26,7 @@ import csv
 import hashlib
 import json
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -56,6 +58,13 @@ def fingerprint(paths):
             if p.is_file() and "build" not in p.relative_to(base).parts[:1]:
                 found[str(p)] = hashlib.sha1(p.read_bytes()).hexdigest()
     return found
+
+
+def fingerprint_reports(out):
+    """{report path: sha1} of every report the grader writes."""
+    names = ("grade.json", "grade.md", "grade.junit.xml", "class.csv", "class.md")
+    return {str(p): hashlib.sha1(p.read_bytes()).hexdigest() for p in sorted(out.rglob("*"))
+            if p.name in names and "build" not in p.parts}
 
 
 def main(argv):
@@ -129,7 +138,10 @@ def main(argv):
     by_file = {e["id"]: e["file"] for e in points["exercises"]}
     expect_row("complete", all_ids)
     expect_row("empty", set(), {i: ("compile error",) for i in all_ids})
-    expect_row("broken", all_ids - {"3.1"}, {"3.1": ("compile error",)})
+    broken = expect_row("broken", all_ids - {"3.1"}, {"3.1": ("compile error",)})
+    message = next(r["message"] for r in broken["exercises"] if r["id"] == "3.1")
+    if not re.match(r"midpoint\.hpp:\d+:\d+: error", message):
+        problems.append(f"broken: the compile error should name midpoint.hpp and its line, got: {message}")
     expect_row("segfaults", all_ids - {"2.2"}, {"2.2": ("crashed",)})
     expect_row("loops", all_ids - {"3.2"}, {"3.2": ("timeout",)})
     attacked = {i for i in all_ids if by_file[i] in tampered}
@@ -147,6 +159,15 @@ def main(argv):
             problems.append(f"class.csv: row of {name} does not match its grade.json")
     if table.get("complete", {}).get("total") != str(total):
         problems.append("class.csv: the complete submission does not have full marks")
+
+    # Regrading the same folders writes the same reports, byte for byte.
+    reports_before = fingerprint_reports(out)
+    again = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), "--timeout", "10",
+                            *[str(classroom / n) for n in names]], cwd=ROOT, capture_output=True, text=True)
+    reports_after = fingerprint_reports(out)
+    if again.returncode != 0 or reports_before != reports_after:
+        changed_reports = sorted(k for k in reports_before if reports_before[k] != reports_after.get(k))
+        problems.append(f"regrading changed the reports: {changed_reports} (exit {again.returncode})")
 
     after = {str(p): hashlib.sha1(p.read_bytes()).hexdigest() for p in watched}
     changed = [p for p in before if before[p] != after.get(p)]
