@@ -18,6 +18,7 @@ assertion counts, which a submission's run must match.
 """
 import argparse
 import hashlib
+import math
 import json
 import os
 import pathlib
@@ -26,6 +27,7 @@ import re
 import signal
 import subprocess
 import sys
+import tempfile
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from grading import build_log, evidence, reports, static_check, submission  # noqa: E402
@@ -41,28 +43,38 @@ def target(ident):
     return "grade_ex" + ident.replace(".", "_")
 
 
+OUTPUT_BYTES = 16 << 20  # what a graded process may write, output and evidence alike
+
+
 def run_limited(command, timeout, **kwargs):
-    """Runs `command` in its own session; on timeout kills the whole group. Returns
-    (returncode or None on timeout, stdout+stderr text)."""
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True,
-                               **kwargs)
-    try:
-        out, _ = process.communicate(timeout=timeout)
-        return process.returncode, out.decode("utf-8", errors="replace")
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        out, _ = process.communicate()
-        return None, out.decode("utf-8", errors="replace")
+    """Runs `command` in its own session, stdin closed, its output into a temporary file (a
+    flood cannot exhaust the grader's memory; RLIMIT_FSIZE caps it inside the sandbox); on
+    timeout kills the whole group. Returns (returncode or None on timeout, output text)."""
+    with tempfile.TemporaryFile() as sink:
+        process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=sink, stderr=subprocess.STDOUT,
+                                   start_new_session=True, **kwargs)
+        try:
+            code = process.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
+            code = None
+        sink.seek(0)
+        return code, sink.read(OUTPUT_BYTES).decode("utf-8", errors="replace")
 
 
-def run_with_evidence(command, evidence_path, timeout, env=None):
-    """Runs a graded program with the evidence channel on a random descriptor number."""
-    fd_number = random.Random(str(evidence_path)).randrange(10, 200)
+def evidence_fd_for(path):
+    """The descriptor number of a run's evidence channel: fixed for a path, different across trees."""
+    return random.Random(str(path)).randrange(10, 200)
+
+
+def run_with_evidence(command, evidence_path, fd_number, timeout):
+    """Runs a graded program with the evidence channel, a capped file, open as `fd_number`.
+    The command carries KIT_EVIDENCE_FD itself (the sandbox clears the environment)."""
     with open(evidence_path, "wb") as sink:
         os.dup2(sink.fileno(), fd_number)
         try:
-            environment = dict(env or os.environ, KIT_EVIDENCE_FD=str(fd_number))
-            return run_limited(command, timeout, pass_fds=(fd_number,), env=environment)
+            return run_limited(command, timeout, pass_fds=(fd_number,))
         finally:
             os.close(fd_number)
 
@@ -70,14 +82,14 @@ def run_with_evidence(command, evidence_path, timeout, env=None):
 def verdict(exercise, binary, run, expected, errors, findings):
     """(status, message) for one exercise."""
     ident = exercise["id"]
+    if target(ident) in errors:  # checked first: a failed build must never run an older binary
+        return "compile error", errors[target(ident)]
     if not binary.exists():
-        if target(ident) in errors:
-            return "compile error", errors[target(ident)]
         return "not run", "the test program was not built (see build.log)"
-    code, output, cases, end = run
+    code, output, cases, end, odd = run
     if code is None:
         return "timeout", "did not finish within the time limit: an endless loop?"
-    status, reason = evidence.judge(expected, cases, end)
+    status, reason = evidence.judge(expected, cases, end, odd)
     signal_caught = re.search(r"(SIG[A-Z]+) - ([^'\n]*)", output)
     if status == "fail" and signal_caught:  # Catch turns a fatal signal into a failed check
         return "crashed", f"the test process died: {signal_caught.group(1)} ({signal_caught.group(2).strip()})"
@@ -118,6 +130,9 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout):
     rows = []
     errors = {}
     if configured:
+        for stale in (build / "tests").glob("grade_ex*"):  # a program that fails to build must not run old
+            if stale.is_file():
+                stale.unlink()
         _, log = run_limited(sandbox.wrap(["cmake", "--build", str(build), "-j", str(jobs), "--", "-k", "0"],
                                           tree, True, BUILD_MEMORY), 3600)
         (tree / "build.log").write_text(log, encoding="utf-8")
@@ -130,11 +145,13 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout):
         if not configured:
             status, message = "error", "the folder could not be configured (see configure.log)"
         else:
-            run = (None, "", {}, None)
+            run = (None, "", {}, None, [])
             if binary.exists():
                 channel = evidence_dir / f"ex{ident}.txt"
-                command = sandbox.wrap([str(binary), "--reporter", "compact", "--rng-seed", SEED], tree, False, TEST_MEMORY)
-                code, output = run_with_evidence(command, channel, timeout)
+                fd = evidence_fd_for(channel)
+                command = sandbox.wrap([str(binary), "--reporter", "compact", "--rng-seed", SEED], tree, False,
+                                       TEST_MEMORY, env={"KIT_EVIDENCE_FD": str(fd)})
+                code, output = run_with_evidence(command, channel, fd, timeout)
                 (evidence_dir / f"ex{ident}.out").write_text(output, encoding="utf-8")
                 run = (code, output, *evidence.read(channel))
             status, message = verdict(exercise, binary, run, expected.get(ident, {}), errors, findings)
@@ -153,12 +170,15 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout):
 
 def labels_for(folders):
     """A report name per folder: its base name, with a short hash of its path when two clash."""
-    names = [f.name or "submission" for f in folders]
+    names = [(f.name or "submission") if f.name not in ("class.csv", "class.md") else f"{f.name}-folder" for f in folders]
     return [n if names.count(n) == 1 else f"{n}-{hashlib.sha1(str(f).encode()).hexdigest()[:6]}"
             for n, f in zip(names, folders)]
 
 
 def batch(args):
+    if not (math.isfinite(args.timeout) and 0 < args.timeout <= 3600):
+        print(f"grade: --timeout {args.timeout}: expected seconds in (0, 3600]", file=sys.stderr)
+        return 2
     points = json.loads(POINTS.read_text(encoding="utf-8"))
     expected = evidence.load_expected(EXPECTED)
     out = pathlib.Path(args.out).resolve()
@@ -174,7 +194,11 @@ def batch(args):
     paths = []
     for folder, label in zip(folders, labels_for(folders)):
         print(f"grading {folder}", file=sys.stderr, flush=True)
-        paths.append(grade_one(folder, label, out, points, expected, sandbox, args.jobs, args.timeout))
+        try:
+            paths.append(grade_one(folder, label, out, points, expected, sandbox, args.jobs, args.timeout))
+        except (OSError, ValueError, UnicodeError) as error:  # one folder's failure never stops the batch
+            print(f"grade: {folder}: could not be graded: {error}", file=sys.stderr)
+            paths.append(out / label / "grade.json")  # absent or stale: the summary names it
     loaded = reports.load_reports(paths)
     reports.write_class(points, loaded, out)
     print("\nBatch summary (points, submission, report):")
@@ -196,9 +220,11 @@ def record_evidence(args):
         ident = exercise["id"]
         binary = build / "tests" / target(ident)
         channel = build / f"evidence-ex{ident}.txt"
-        code, output = run_with_evidence([str(binary), "--reporter", "compact", "--rng-seed", SEED], channel, 300)
-        cases, end = evidence.read(channel)
-        if code != 0 or end is None or any(bad for _, bad in cases.values()):
+        fd = evidence_fd_for(channel)
+        code, output = run_with_evidence(["env", f"KIT_EVIDENCE_FD={fd}", str(binary), "--reporter", "compact",
+                                          "--rng-seed", SEED], channel, fd, 300)
+        cases, end, odd = evidence.read(channel)
+        if code != 0 or end is None or odd or any(bad for _, bad in cases.values()):
             problems.append(f"ex {ident}: the reference does not pass (exit {code}): {build_log.first_failure(output)}")
         recorded[ident] = {name: passed for name, (passed, _) in cases.items()}
     if problems:

@@ -1,6 +1,7 @@
 #include <kit/atomic_file.hpp>
 
 #include <array>
+#include <atomic>
 #include <csignal>
 #include <cstring>
 #include <fstream>
@@ -37,7 +38,8 @@ void install_cleanup() {
   for (std::size_t k = 0; k < cleanup_signals.size(); ++k) {
     struct sigaction current {};
     sigaction(cleanup_signals[k], nullptr, &current);
-    if (current.sa_handler == remove_temporaries_and_die) continue;
+    // Ours already, or ignored on purpose (nohup, a background job): leave it as it is.
+    if (current.sa_handler == remove_temporaries_and_die || current.sa_handler == SIG_IGN) continue;
     struct sigaction action {};
     action.sa_handler = remove_temporaries_and_die;
     sigemptyset(&action.sa_mask);
@@ -52,6 +54,7 @@ void remember(const std::filesystem::path& temporary) {
   for (std::size_t i = 0; i < slots; ++i)
     if (!occupied[i]) {
       std::memcpy(in_flight[i].data(), text.c_str(), text.size() + 1);
+      std::atomic_signal_fence(std::memory_order_release);  // the path is whole before the flag says so
       occupied[i] = 1;
       return;
     }

@@ -71,7 +71,9 @@ void ChapterApp::add_count(const std::string& flag, long& value, const std::stri
     errno = 0;
     char* end = nullptr;
     const long v = std::strtol(input.c_str(), &end, 10);
-    if (end == input.c_str() || *end != '\0' || errno == ERANGE || v < lo || v > hi)
+    // CLI11 would read a leading 0 as octal (010 = 8): refused, so the value run is the one read.
+    const bool octal_looking = input.size() > 1 && input[0] == '0';
+    if (end == input.c_str() || *end != '\0' || errno == ERANGE || v < lo || v > hi || octal_looking)
       return fmt::format("value {} is out of range; expected a whole number in [{}, {}]", input, lo, hi);
     return {};
   };

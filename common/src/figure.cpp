@@ -1,6 +1,7 @@
 #include <kit/figure.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -46,18 +47,28 @@ std::vector<std::size_t> plotted_indices(const Series& s) {
     for (std::size_t i = 0; i < n; ++i) kept.push_back(i);
     return kept;
   }
-  // Slices of consecutive points; each keeps its lowest and highest y in their order, so the
-  // envelope of an oscillation or a spike survives. The last point is always kept.
-  const std::size_t slices = max_plotted_points / 2;
+  // Slices of consecutive points; each keeps its extreme points in y and in x (a phase portrait
+  // is a curve in both), in their order, so the envelope of an oscillation or a spike survives.
+  // Extremes start from the slice's first finite point: a NaN compares false with everything.
+  const std::size_t slices = max_plotted_points / 4;
   for (std::size_t k = 0; k < slices; ++k) {
     const std::size_t begin = k * n / slices, end = (k + 1) * n / slices;
-    std::size_t lo = begin, hi = begin;
-    for (std::size_t i = begin; i < end; ++i) {
-      if (s.y[i] < s.y[lo]) lo = i;
-      if (s.y[i] > s.y[hi]) hi = i;
+    std::size_t first = begin;
+    while (first < end && !(std::isfinite(s.x[first]) && std::isfinite(s.y[first]))) ++first;
+    if (first == end) {
+      kept.push_back(begin);  // an undefined stretch stays a gap
+      continue;
     }
-    kept.push_back(std::min(lo, hi));
-    if (hi != lo) kept.push_back(std::max(lo, hi));
+    std::array<std::size_t, 4> extremes{first, first, first, first};  // lowest y, highest y, lowest x, highest x
+    for (std::size_t i = first; i < end; ++i) {
+      if (s.y[i] < s.y[extremes[0]]) extremes[0] = i;
+      if (s.y[i] > s.y[extremes[1]]) extremes[1] = i;
+      if (s.x[i] < s.x[extremes[2]]) extremes[2] = i;
+      if (s.x[i] > s.x[extremes[3]]) extremes[3] = i;
+    }
+    std::sort(extremes.begin(), extremes.end());
+    for (std::size_t j = 0; j < extremes.size(); ++j)
+      if (j == 0 || extremes[j] != extremes[j - 1]) kept.push_back(extremes[j]);
   }
   if (kept.back() != n - 1) kept.push_back(n - 1);
   return kept;

@@ -1,6 +1,7 @@
 #include <kit/report.hpp>
 
 #include <cmath>
+#include <regex>
 #include <stdexcept>
 
 #include <fmt/args.h>
@@ -118,20 +119,25 @@ void Report::store(std::string_view section, const std::vector<Field>& fields) {
 }
 
 void Report::say(std::string_view section, std::string_view sentence, const std::vector<Field>& fields) {
+  // A missing value or a non-finite double takes the words format_value gives it ("-",
+  // "overflow", "undefined") whatever the field's format, so a sentence never prints inf or nan.
+  std::string text(sentence);
   fmt::dynamic_format_arg_store<fmt::format_context> args;
   for (const auto& f : fields) {
+    const double* d = std::get_if<double>(&f.value);
+    if (std::holds_alternative<std::monostate>(f.value) || (d && !std::isfinite(*d))) {
+      const std::regex field("\\{" + f.key + "(:[^}]*)?\\}");
+      text = std::regex_replace(text, field, format_value(f.value, "{}"));
+      continue;
+    }
     std::visit(
         [&](const auto& v) {
           using V = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<V, std::monostate>) {
-            args.push_back(fmt::arg(f.key.c_str(), std::string("-")));
-          } else {
-            args.push_back(fmt::arg(f.key.c_str(), v));
-          }
+          if constexpr (!std::is_same_v<V, std::monostate>) args.push_back(fmt::arg(f.key.c_str(), v));
         },
         f.value);
   }
-  *text_ << fmt::vformat(sentence, args);
+  *text_ << fmt::vformat(text, args);
   store(section, fields);
 }
 

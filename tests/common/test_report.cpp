@@ -19,6 +19,9 @@ TEST_CASE("say prints each field with its format and stores the same value under
   report.say("roundoff/explicit_float", "{best_dt:.2e}\n", {{"best_dt", 5.6e-5}});
   CHECK(summary["roundoff"]["explicit_float"]["best_dt"].get<double>() == 5.6e-5);
   report.say("", "top {n}\n", {{"n", 3L}});
+  report.say("", "{energy:.3g} {missing:d} {nan:.2e}\n", {{"energy", INFINITY}, {"missing", std::monostate{}},
+                                                          {"nan", std::nan("")}});
+  CHECK(text.str().find("overflow - undefined\n") != std::string::npos);  // never inf or nan
   CHECK(summary["n"].get<long>() == 3);
 }
 

@@ -69,16 +69,22 @@ def main(argv):
         if done.returncode != 2 or "--out" not in done.stderr:
             problems.append(f"--out {bad!r}: exit {done.returncode}, expected 2 naming --out")
 
-    # A run stopped by a timeout (SIGTERM) while writing figures leaves no temporary file.
-    for delay in (0.3, 0.6, 0.9, 1.2):
-        out = work / f"killed-{delay}"
-        process = subprocess.Popen([str(bin_dir / "02-spring-stability"), "--quiet", "--out", str(out)],
-                                   start_new_session=True)
-        time.sleep(delay)
-        process.send_signal(signal.SIGTERM)
-        process.wait(timeout=60)
-        if out.exists() and leftovers(out):
-            problems.append(f"killed after {delay} s: left {leftovers(out)}")
+    # A run stopped by a timeout (SIGTERM) while a figure is half-written leaves no temporary.
+    out = work / "killed"
+    process = subprocess.Popen([str(bin_dir / "02-spring-stability"), "--quiet", "--out", str(out)],
+                               start_new_session=True)
+    deadline = time.monotonic() + 120
+    while not (out.exists() and leftovers(out)) and process.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.002)  # until a temporary exists: the signal then lands mid-write
+    caught = out.exists() and bool(leftovers(out))
+    process.send_signal(signal.SIGTERM)
+    code = process.wait(timeout=60)
+    if not caught:
+        problems.append("never saw a temporary file to interrupt")
+    elif code != -signal.SIGTERM:
+        problems.append(f"SIGTERM mid-write: exit {code}, expected death by SIGTERM")
+    elif leftovers(out):
+        problems.append(f"SIGTERM mid-write left {leftovers(out)}")
 
     for p in problems:
         print(p, file=sys.stderr)

@@ -117,7 +117,7 @@ def main(argv):
     before = {str(p): hashlib.sha1(p.read_bytes()).hexdigest() for p in watched}
     before_class = fingerprint([classroom])
 
-    run = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), "--timeout", "10",
+    run = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), "--timeout", "20",
                           *[str(classroom / n) for n in names]], cwd=ROOT, capture_output=True, text=True)
     print(run.stdout[-6000:])
     problems = [] if run.returncode == 0 else [f"./kit grade exited {run.returncode}: {run.stderr[-2000:]}"]
@@ -162,7 +162,7 @@ def main(argv):
 
     # Regrading the same folders writes the same reports, byte for byte.
     reports_before = fingerprint_reports(out)
-    again = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), "--timeout", "10",
+    again = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), "--timeout", "20",
                             *[str(classroom / n) for n in names]], cwd=ROOT, capture_output=True, text=True)
     reports_after = fingerprint_reports(out)
     if again.returncode != 0 or reports_before != reports_after:

@@ -9,30 +9,49 @@ import json
 import pathlib
 
 
+READ_BYTES = 1 << 20  # more evidence than any honest run writes is itself a finding
+
+
 def read(path):
-    """{case name: (passed, failed)}, and the end record (passed, failed) or None."""
-    cases, end = {}, None
+    """{case name: (passed, failed)} and the end record (passed, failed), or None; plus the
+    inconsistencies an honest run never shows (a case twice, a line after the end, totals that
+    disagree, unreadable lines), as a list of strings."""
+    cases, end, odd = {}, None, []
     path = pathlib.Path(path)
     if not path.exists():
-        return cases, end
-    for line in path.read_text(encoding="utf-8", errors="replace").splitlines():
+        return cases, end, odd
+    with open(path, "rb") as f:
+        text = f.read(READ_BYTES + 1).decode("utf-8", errors="replace")
+    if len(text) > READ_BYTES:
+        odd.append("the evidence is larger than any run writes")
+    for line in text.splitlines():
         parts = line.split("\t")
         try:
-            if parts[0] == "case" and len(parts) == 4:
+            if end is not None:
+                odd.append("a record after the end of the run")
+            elif parts[0] == "case" and len(parts) == 4:
+                if parts[1] in cases:
+                    odd.append(f"test case '{parts[1]}' reported twice")
                 cases[parts[1]] = (int(parts[2]), int(parts[3]))
             elif parts[0] == "end" and len(parts) == 3:
                 end = (int(parts[1]), int(parts[2]))
+            else:
+                odd.append("a line that is not a record")
         except ValueError:
-            continue
-    return cases, end
+            odd.append("a record with a count that is not a number")
+    if end is not None and end != (sum(c[0] for c in cases.values()), sum(c[1] for c in cases.values())):
+        odd.append("the run's totals disagree with its test cases")
+    return cases, end, odd
 
 
 def load_expected(path):
     return json.loads(pathlib.Path(path).read_text(encoding="utf-8"))
 
 
-def judge(expected, cases, end):
+def judge(expected, cases, end, odd=()):
     """(status, reason) from the evidence alone: pass, fail or integrity."""
+    if odd:
+        return "integrity", f"the evidence is not what a test run writes: {odd[0]}"
     failed = [name for name, (_, bad) in cases.items() if bad > 0]
     if failed:
         return "fail", f"{len(failed)} test case(s) failed: {failed[0]}"

@@ -6,9 +6,17 @@ import csv
 import io
 import json
 import pathlib
+import re
 from xml.sax.saxutils import escape
 
 STATUSES = ("pass", "fail", "compile error", "crashed", "timeout", "integrity", "not run", "error")
+
+
+CONTROL = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f]")  # not allowed in XML 1.0
+
+
+def xml_text(text, quote=False):
+    return escape(CONTROL.sub("?", text), {'"': "&quot;"} if quote else {})
 
 
 def write_submission(report, out_dir):
@@ -31,12 +39,12 @@ def write_submission(report, out_dir):
     _write(out_dir / "grade.md", "\n".join(md) + "\n")
     failures = sum(r["status"] != "pass" for r in rows)
     xml = ['<?xml version="1.0" encoding="UTF-8"?>',
-           f'<testsuite name="{escape(label, {chr(34): "&quot;"})}" tests="{len(rows)}" failures="{failures}">']
+           f'<testsuite name="{xml_text(label, True)}" tests="{len(rows)}" failures="{failures}">']
     for r in rows:
-        name = escape(f"ex {r['id']}: {r['title']} ({r['max_points']} points)", {'"': "&quot;"})
-        xml.append(f'  <testcase classname="{escape(r["chapter"])}" name="{name}">')
+        name = xml_text(f"ex {r['id']}: {r['title']} ({r['max_points']} points)", True)
+        xml.append(f'  <testcase classname="{xml_text(r["chapter"], True)}" name="{name}">')
         if r["status"] != "pass":
-            xml.append(f'    <failure message="{escape(r["status"], {chr(34): "&quot;"})}">{escape(r["message"])}</failure>')
+            xml.append(f'    <failure message="{xml_text(r["status"], True)}">{xml_text(r["message"])}</failure>')
         xml.append("  </testcase>")
     xml.append("</testsuite>")
     _write(out_dir / "grade.junit.xml", "\n".join(xml) + "\n")

@@ -85,8 +85,8 @@ struct FigureFiles {
 /// temporary name. Throws std::runtime_error when gnuplot cannot produce a render.
 FigureFiles write_figure(const Figure& figure, const FigureOptions& options);
 
-/// A series longer than this is thinned in the data file to the extremes of max/2 slices: a
-/// figure shows a few thousand points, not millions.
+/// A series longer than this is thinned in the data file to the extremes in x and y of max/4
+/// slices: a figure shows a few thousand points, not millions.
 inline constexpr std::size_t max_plotted_points = 4000;
 /// The indices of `s` written to the data file (all of them, or the thinned extremes).
 std::vector<std::size_t> plotted_indices(const Series& s);
