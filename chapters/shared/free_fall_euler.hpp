@@ -4,14 +4,14 @@
 // wires the selected methods to the free-fall model (kit/free_fall.hpp).
 #include <algorithm>
 #include <cmath>
-#include <tuple>
-#include <utility>
+#include <optional>
 #include <vector>
 
 #include <kit/fixed_steps.hpp>
 #include <kit/free_fall.hpp>
 #include <kit/measure.hpp>
 #include <kit/reference_solver.hpp>
+#include <kit/report.hpp>
 #include <kit/step_budget.hpp>
 #include <kit/stopwatch.hpp>
 
@@ -28,32 +28,42 @@ inline Trajectory<Vec2> lecture_loop(const FreeFall& fall, double dt, long n, lo
                 [&](const Vec2& u) { return explicit_euler_step(f, 0.0, u, dt); });
 }
 
-/// Both matrix forms over [0, T] in steps of h [s] (lecture, "Approche matricielle"):
-/// explicit u_{k+1} = (I + hA) u_k + h b (ex 1.2), implicit (I − hA) u_{k+1} = u_k + h b (ex 1.3).
-/// Returns (explicit, implicit), T/h + 1 samples each.
-inline std::pair<Trajectory<Vec2>, Trajectory<Vec2>> matrix_forms(const FreeFall& fall, double t_end,
-                                                                    double h) {
+/// The matrix forms over [0, T] in steps of h [s] (lecture, "Approche matricielle"), T/h + 1
+/// samples each: explicit u_{k+1} = (I + hA) u_k + h b (ex 1.2) and implicit
+/// (I − hA) u_{k+1} = u_k + h b (ex 1.3).
+inline Trajectory<Vec2> explicit_matrix_form(const FreeFall& fall, double t_end, double h) {
   const ExplicitEulerAffine<2> forward(fall.affine(), h);
+  const auto step = [&](const Vec2& u) { return forward.step(u); };
+  return record(fall.initial_state(), h, whole_steps(t_end, h), step);
+}
+inline Trajectory<Vec2> implicit_matrix_form(const FreeFall& fall, double t_end, double h) {
   const ImplicitEulerAffine<2> backward(fall.affine(), h);
-  const long m = whole_steps(t_end, h);
-  return {record(fall.initial_state(), h, m, [&](const Vec2& u) { return forward.step(u); }),
-          record(fall.initial_state(), h, m, [&](const Vec2& u) { return backward.step(u); })};
+  const auto step = [&](const Vec2& u) { return backward.step(u); };
+  return record(fall.initial_state(), h, whole_steps(t_end, h), step);
 }
 
-/// The runs of chapter 1's table over [0, T], all sampled at t_k = kΔt, k = 0..T/Δt.
+/// The runs of chapter 1's table over [0, T], all sampled at t_k = kΔt, k = 0..T/Δt. A run
+/// whose exercise is not written yet is absent (the report said which exercise it waits for).
 struct EulerRuns {
-  Trajectory<Vec2> loop;        ///< the lecture's loop (explicit Euler on f)
-  Trajectory<Vec2> expl, impl;  ///< explicit and implicit Euler in matrix form
-  Trajectory<Vec2> reference;   ///< GSL rk8pd at the same times
-  long rhs_evals = 0;           ///< evaluations of f by the loop: one a step
-  Stats reference_stats;        ///< what GSL's reference cost
+  std::optional<Trajectory<Vec2>> loop;        ///< the lecture's loop (explicit Euler on f, ex 1.1)
+  std::optional<Trajectory<Vec2>> expl, impl;  ///< explicit (ex 1.2) and implicit (ex 1.3) matrix forms
+  Trajectory<Vec2> reference;                  ///< GSL rk8pd at the same times
+  long rhs_evals = 0;                          ///< evaluations of f by the loop: one a step
+  Stats reference_stats;                       ///< what GSL's reference cost
 
-  /// max_k |x_k(loop) − x_k(matrix form)| [m]: 0 when ex 1.1 and ex 1.2 agree to the last bit.
-  double loop_vs_matrix() const {
+  /// max_k |x_k(loop) − x_k(matrix form)| [m]: 0 when ex 1.1 and ex 1.2 agree to the last bit;
+  /// none until both are written.
+  std::optional<double> loop_vs_matrix() const {
+    if (!loop || !expl) return std::nullopt;
     double d = 0;
-    for (std::size_t k = 0; k < loop.size(); ++k) d = std::max(d, std::abs(loop.u[k][0] - expl.u[k][0]));
+    for (std::size_t k = 0; k < loop->size(); ++k) d = std::max(d, std::abs(loop->u[k][0] - expl->u[k][0]));
     return d;
   }
+  /// Explicit Euler's run for the table: the matrix form (ex 1.2), or until it is written the
+  /// lecture's loop (ex 1.1), which gives the same numbers to the last bit.
+  const std::optional<Trajectory<Vec2>>& explicit_run() const { return expl ? expl : loop; }
+  /// Evaluations of f by the loop, or none when the loop waits for ex 1.1.
+  std::optional<long> loop_rhs_evals() const { return loop ? std::optional(rhs_evals) : std::nullopt; }
   /// max_k |x_k(GSL) − x̃(t_k)| [m].
   double reference_error(const FreeFall& fall) const {
     double d = 0;
@@ -62,11 +72,22 @@ struct EulerRuns {
     return d;
   }
 };
-inline EulerRuns run_euler(const FreeFall& fall, double dt, double t_end) {
+/// x_k [m] of a run, or "-" when the run waits for its exercise.
+inline ReportValue height_at(const std::optional<Trajectory<Vec2>>& run, std::size_t k) {
+  return run ? ReportValue(run->u[k][0]) : ReportValue(std::monostate{});
+}
+/// Runs each method whose exercise is written; the report names those that wait for one.
+inline EulerRuns run_euler(Report& report, const FreeFall& fall, double dt, double t_end) {
   EulerRuns r;
-  r.loop = lecture_loop(fall, dt, whole_steps(t_end, dt), r.rhs_evals);
-  std::tie(r.expl, r.impl) = matrix_forms(fall, t_end, dt);
-  r.reference = reference_solution(fall, 0.0, fall.initial_state(), r.loop.t, {}, &r.reference_stats);
+  const long n = whole_steps(t_end, dt);
+  r.loop = report.attempt("the lecture's loop", [&] { return lecture_loop(fall, dt, n, r.rhs_evals); });
+  r.expl = report.attempt(
+      "explicit Euler, matrix form", [&] { return explicit_matrix_form(fall, t_end, dt); });
+  r.impl = report.attempt(
+      "implicit Euler, matrix form", [&] { return implicit_matrix_form(fall, t_end, dt); });
+  std::vector<double> times(std::size_t(n) + 1);
+  for (long k = 0; k <= n; ++k) times[std::size_t(k)] = double(k) * dt;  // as record() samples them
+  r.reference = reference_solution(fall, 0.0, fall.initial_state(), times, {}, &r.reference_stats);
   return r;
 }
 
@@ -97,25 +118,40 @@ double implicit_error(const FreeFall& fall, double t_end, long n) {
 
 /// |error| [m] against Δt = T/m [s], m = 10 … 10⁴ (4 a decade), for both Euler schemes in
 /// double (ERRATA item 2): at the fixed time T (global, slope 1) and after one step of Δt
-/// (local, slope 2).
+/// (local, slope 2). A scheme whose exercise is not written yet has empty sweeps.
 struct EulerOrders {
+  std::vector<double> dt;  ///< Δt [s] of every sweep, largest first
   Sweep global_explicit, global_implicit, local_explicit, local_implicit;
-  /// {"dt": [...], "global_explicit": [...], ...}: the errors, one per Δt, for the --json summary.
+  /// The least-squares slope of each sweep, "-" for a scheme that did not run.
+  std::vector<Field> slopes() const {
+    const auto slope = [](const Sweep& s) { return s.dt.empty() ? ReportValue() : ReportValue(s.order()); };
+    return {{"global_explicit", slope(global_explicit)}, {"global_implicit", slope(global_implicit)},
+            {"local_explicit", slope(local_explicit)}, {"local_implicit", slope(local_implicit)}};
+  }
+  /// {"dt": [...], "global_explicit": [...] or null, ...}: the errors, one per Δt, for --json.
   nlohmann::json to_json() const {
-    return {{"dt", global_explicit.dt}, {"global_explicit", global_explicit.error},
-            {"global_implicit", global_implicit.error}, {"local_explicit", local_explicit.error},
-            {"local_implicit", local_implicit.error}};
+    const auto errors = [](const Sweep& s) { return s.dt.empty() ? nlohmann::json() : nlohmann::json(s.error); };
+    return {{"dt", dt}, {"global_explicit", errors(global_explicit)},
+            {"global_implicit", errors(global_implicit)}, {"local_explicit", errors(local_explicit)},
+            {"local_implicit", errors(local_implicit)}};
   }
 };
-inline EulerOrders measure_orders(const FreeFall& fall, double t_end) {
+inline EulerOrders measure_orders(Report& report, const FreeFall& fall, double t_end) {
   EulerOrders o;
-  for (long m : geometric_counts(10, 10'000, 4)) {
-    const double h = t_end / double(m);
-    o.global_explicit.add(h, std::abs(explicit_error<double>(fall, t_end, m)));
-    o.global_implicit.add(h, std::abs(implicit_error<double>(fall, t_end, m)));
-    o.local_explicit.add(h, std::abs(explicit_error<double>(fall, h, 1)));
-    o.local_implicit.add(h, std::abs(implicit_error<double>(fall, h, 1)));
-  }
+  const auto counts = geometric_counts(10, 10'000, 4);
+  for (long m : counts) o.dt.push_back(t_end / double(m));
+  report.attempt("explicit Euler's orders", [&] {
+    for (long m : counts) {
+      o.global_explicit.add(t_end / double(m), std::abs(explicit_error<double>(fall, t_end, m)));
+      o.local_explicit.add(t_end / double(m), std::abs(explicit_error<double>(fall, t_end / double(m), 1)));
+    }
+  });
+  report.attempt("implicit Euler's orders", [&] {
+    for (long m : counts) {
+      o.global_implicit.add(t_end / double(m), std::abs(implicit_error<double>(fall, t_end, m)));
+      o.local_implicit.add(t_end / double(m), std::abs(implicit_error<double>(fall, t_end / double(m), 1)));
+    }
+  });
   return o;
 }
 
@@ -139,22 +175,29 @@ struct Roundoff {
 
 /// Runs explicit Euler in double for every step count of `doubles`, and both Euler schemes in
 /// float for those counts that `floats` allows (float stagnates long before: x + Δt·v rounds
-/// back to x, so its sweep stops at a larger step). Both sweeps cover the same T.
-inline Roundoff measure_roundoff(const FreeFall& fall, const StepSweep& doubles, const StepSweep& floats) {
+/// back to x, so its sweep stops at a larger step). Both sweeps cover the same T. A scheme whose
+/// exercise is not written yet leaves its curves empty.
+inline Roundoff measure_roundoff(Report& report, const FreeFall& fall, const StepSweep& doubles,
+                                 const StepSweep& floats) {
   Roundoff r;
   const double t_end = doubles.t_end, g = std::abs(fall.g);
-  for (long m : doubles.counts(4)) {
-    const double h = t_end / double(m);
-    CostPoint c{h, m};
-    const auto run = [&] { return explicit_error<double>(fall, t_end, m, &c.rhs_evals); };
-    c.error = std::abs(time_per_call(run, c.seconds));
-    r.doubles.add(h, c.error);
-    r.roundoff_part.add(h, std::abs(c.error - 0.5 * t_end * h * g));
-    r.cost.push_back(c);
-    if (m > floats.most_steps()) continue;
-    r.floats.add(h, std::abs(explicit_error<float>(fall, t_end, m)));
-    r.floats_implicit.add(h, std::abs(implicit_error<float>(fall, t_end, m)));
-  }
+  report.attempt("explicit Euler's round-off", [&] {
+    for (long m : doubles.counts(4)) {
+      const double h = t_end / double(m);
+      CostPoint c{h, m};
+      const auto run = [&] { return explicit_error<double>(fall, t_end, m, &c.rhs_evals); };
+      c.error = std::abs(time_per_call(run, c.seconds));
+      r.doubles.add(h, c.error);
+      r.roundoff_part.add(h, std::abs(c.error - 0.5 * t_end * h * g));
+      r.cost.push_back(c);
+      if (m <= floats.most_steps()) r.floats.add(h, std::abs(explicit_error<float>(fall, t_end, m)));
+    }
+  });
+  report.attempt("implicit Euler's round-off", [&] {
+    for (long m : doubles.counts(4))
+      if (m <= floats.most_steps())
+        r.floats_implicit.add(t_end / double(m), std::abs(implicit_error<float>(fall, t_end, m)));
+  });
   return r;
 }
 

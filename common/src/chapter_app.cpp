@@ -105,11 +105,6 @@ void ChapterApp::add_divergence_flag() {
                 "exit with code 3 when a simulation diverged (it is reported either way)");
 }
 
-void ChapterApp::skipped(const std::string& title, const std::string& why) {
-  report_.print(fmt::format("\n[skipped] {}: {}\n", title, why));  // words only: the JSON has the same
-  summary_["skipped"].push_back({{"section", title}, {"reason", why}});
-}
-
 void ChapterApp::diverged(const std::string& run, const std::string& what) {
   summary_["divergences"].push_back({{"run", run}, {"what", what}});
 }

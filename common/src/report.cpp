@@ -145,4 +145,9 @@ ReportTable Report::table(std::string_view section, std::vector<Column> columns)
   return ReportTable(*text_, json(section), std::move(columns));
 }
 
+void Report::skipped(const std::string& part, const std::string& why) {
+  print(fmt::format("\n[skipped] {}: {}\n", part, why));  // words only: the JSON has the same
+  (*summary_)["skipped"].push_back({{"section", part}, {"reason", why}});
+}
+
 }  // namespace kit

@@ -45,3 +45,20 @@ TEST_CASE("a gap on the wrong side, or off by the lecture's missing |g|, does no
   CHECK_FALSE(wrong.match[10]);
   CHECK(wrong.mismatch == Approx(0.5 * 10 * 0.01 * (9.81 - 1)).epsilon(1e-12));
 }
+
+TEST_CASE("a scheme not written yet (an empty run) leaves the other checked alone") {
+  kit::FreeFall fall;
+  const auto [e, i] = loop_gaps(fall, 0.1, 10);
+  const auto explicit_only = kit::check_euler_gaps(fall, 0.1, 1.0, e, {});
+  REQUIRE(explicit_only.match.size() == 11);
+  for (bool m : explicit_only.match) CHECK(m);
+  const auto implicit_only = kit::check_euler_gaps(fall, 0.1, 1.0, {}, i);
+  REQUIRE(implicit_only.match.size() == 11);
+  for (bool m : implicit_only.match) CHECK(m);
+  CHECK_FALSE(kit::check_euler_gaps(fall, 0.1, 1.0, i, {}).match[10]);  // alone, still on its side
+  const auto neither = kit::check_euler_gaps(fall, 0.1, 1.0, {}, {});
+  CHECK(neither.match.empty());
+  REQUIRE(neither.predicted.size() == 11);  // the prediction is there before any scheme runs
+  CHECK(neither.predicted[10] == Approx(5 * 0.01 * 9.81).epsilon(1e-14));
+  CHECK_THROWS_AS(kit::check_euler_gaps(fall, 0.1, 1.0, e, std::vector<double>(3)), std::invalid_argument);
+}

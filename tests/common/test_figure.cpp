@@ -169,3 +169,12 @@ TEST_CASE("a series of a million points is thinned to the extremes of 1000 slice
   for (std::size_t i : kit::plotted_indices(phase)) lowest_x = std::min(lowest_x, phase.x[i]);
   CHECK(lowest_x < -0.999);
 }
+
+TEST_CASE("a panel stays usable after more panels are added (the figure keeps references valid)") {
+  kit::Figure figure("panels", "references");
+  auto& first = figure.panel("x [m]", "y [m]");
+  for (int i = 0; i < 64; ++i) figure.panel("x [m]", "y [m]");  // would reallocate a vector
+  first.line("drawn later", {0.0, 1.0}, {0.0, 1.0});
+  REQUIRE(figure.panels.front().series.size() == 1);
+  CHECK(figure.panels.front().series.front().title == "drawn later");
+}

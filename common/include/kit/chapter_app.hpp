@@ -8,16 +8,15 @@
 //  - a diverging simulation is a reported result (exit 0, or 3 under --fail-on-divergence).
 #include <functional>
 #include <optional>
-#include <type_traits>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <kit/figure.hpp>
-#include <kit/not_implemented.hpp>
 #include <kit/real_range.hpp>
 #include <kit/report.hpp>
 #include <kit/usage.hpp>
@@ -66,28 +65,11 @@ class ChapterApp {
   /// lists its files in the summary.
   void figure(const Figure& figure);
 
-  /// Runs one section of the lecture, `fn()`. When it needs an exercise the student has not
-  /// written yet (kit::NotImplemented), the chapter says which section waits for which exercise
-  /// and goes on with the next one: a student sees every part that their code already runs.
-  /// Returns fn's result, or nullopt when skipped (true/false for a section that returns nothing).
+  /// Runs one section of the lecture, `fn()`, or says which exercise it waits for
+  /// (Report::attempt): a student sees every section that their code already runs.
   template <class F>
   auto section(const std::string& title, F&& fn) {
-    using R = std::invoke_result_t<F>;
-    try {
-      if constexpr (std::is_void_v<R>) {
-        fn();
-        return true;
-      } else {
-        return std::optional<R>(fn());
-      }
-    } catch (const NotImplemented& waiting) {
-      skipped(title, waiting.what());
-      if constexpr (std::is_void_v<R>) {
-        return false;
-      } else {
-        return std::optional<R>();
-      }
-    }
+    return report_.attempt(title, std::forward<F>(fn));
   }
 
   /// Adds --fail-on-divergence, for chapters whose runs can blow up.
@@ -97,8 +79,6 @@ class ChapterApp {
   void diverged(const std::string& run, const std::string& what);
 
  private:
-  void skipped(const std::string& title, const std::string& why);
-
   std::string chapter_;
   CLI::App app_;
   CommonOptions options_;

@@ -2,6 +2,7 @@
 // Figures: for each one, the data (name.dat), the gnuplot script that draws it (name.gp,
 // restylable without rerunning anything) and its renders (PDF for slides, PNG, SVG on request).
 #include <array>
+#include <deque>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -63,7 +64,7 @@ struct Figure {
   std::optional<double> left_edge, right_edge;
   /// Panels without a `place` fill a grid this many columns wide, row by row.
   int columns = 1;
-  std::vector<Panel> panels;
+  std::deque<Panel> panels;  ///< a deque: the reference panel() returns stays valid when more are added
 
   Figure(std::string name, std::string title) : name(std::move(name)), title(std::move(title)) {}
   Panel& panel(std::string xlabel, std::string ylabel, std::string panel_title = "");

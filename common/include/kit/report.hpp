@@ -9,6 +9,7 @@
 //   table.row("rk4", {...}) stores a row by name instead, summary["samples"]["rk4"] = {...},
 //   and table.append("GSL rkck", {...}) appends it to the array summary["samples"]["GSL rkck"].
 #include <initializer_list>
+#include <type_traits>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -18,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <kit/not_implemented.hpp>
 #include <kit/table.hpp>
 
 namespace kit {
@@ -29,6 +31,12 @@ using ReportValue = std::variant<std::monostate, bool, long, double, std::string
 /// The value, or "-" and null when there is none (a step count a peer does not report).
 ReportValue optional_value(const std::optional<double>& value);
 ReportValue optional_value(const std::optional<long>& value);
+/// values[k], or "-" and null past its end (a run that has not been made: its exercise waits).
+template <class T>
+ReportValue value_at(const std::vector<T>& values, std::size_t k) {
+  if (k >= values.size()) return std::monostate{};
+  return static_cast<T>(values[k]);
+}
 
 /// A named value: `key` is its JSON key and its name in a sentence's {key:format} field.
 struct Field {
@@ -99,7 +107,34 @@ class Report {
   /// The JSON node at `section`, for what a row or a field cannot hold (arrays of a sweep).
   nlohmann::json& json(std::string_view section);
 
+  /// Runs one part of a chapter, `fn()`: a lecture section or one method inside it. When it
+  /// needs an exercise the student has not written yet (kit::NotImplemented), the report says
+  /// which part waits for which exercise ("[skipped] …" in the text, summary["skipped"] in the
+  /// JSON) and the chapter goes on: a student sees every part that their code already runs.
+  /// Returns fn's result, or nullopt when skipped (true/false for a part that returns nothing).
+  template <class F>
+  auto attempt(const std::string& part, F&& fn) {
+    using R = std::invoke_result_t<F>;
+    try {
+      if constexpr (std::is_void_v<R>) {
+        fn();
+        return true;
+      } else {
+        return std::optional<R>(fn());
+      }
+    } catch (const NotImplemented& waiting) {
+      skipped(part, waiting.what());
+      if constexpr (std::is_void_v<R>) {
+        return false;
+      } else {
+        return std::optional<R>();
+      }
+    }
+  }
+
  private:
+  void skipped(const std::string& part, const std::string& why);
+
   std::ostream* text_;
   nlohmann::json* summary_;
 };
