@@ -90,11 +90,32 @@ inline SpringRun run_scheme(Scheme s, const Spring& spring, const Vec2& u0, doub
   return run;
 }
 
-/// The runs of every scheme at one Δt, by scheme.
+/// What the student's code can run so far: the schemes whose exercises are written (ex 1.2 and
+/// 2.1 for explicit Euler, 2.2, 2.3, 3.1, 3.2), and whether the amplification factors R(z) of
+/// ex 2.4 are. The chapter runs those, and says what each other part waits for.
+struct Written {
+  std::vector<Scheme> schemes;
+  bool factors = false;
+  bool has(Scheme s) const { return std::find(schemes.begin(), schemes.end(), s) != schemes.end(); }
+};
+/// Probes each scheme with one step and R(z) at one z; the report names what is not written yet.
+inline Written written_parts(Report& report, const Spring& spring, const Vec2& u0, double dt) {
+  Written w;
+  for (Scheme s : all_schemes)
+    if (report.attempt(name(s), [&] { spring_stepper(s, spring, dt)(u0); })) w.schemes.push_back(s);
+  w.factors = report.attempt("amplification factors R(z)", [] {
+    for (Scheme s : all_schemes)  // symplectic Euler has a 2×2 step matrix instead, from kit/
+      if (s != Scheme::symplectic_euler) amplification_factor(s, {-0.5, 0.5});
+  });
+  return w;
+}
+
+/// The runs of every scheme in `schemes` at one Δt, by scheme.
 using SpringRuns = std::map<Scheme, SpringRun>;
-inline SpringRuns run_every_scheme(const Spring& spring, const Vec2& u0, double dt, long n) {
+inline SpringRuns run_every_scheme(const Spring& spring, const Vec2& u0, double dt, long n,
+                                   const std::vector<Scheme>& schemes) {
   SpringRuns runs;
-  for (Scheme s : all_schemes) runs.emplace(s, run_scheme(s, spring, u0, dt, n));
+  for (Scheme s : schemes) runs.emplace(s, run_scheme(s, spring, u0, dt, n));
   return runs;
 }
 
@@ -102,12 +123,17 @@ inline SpringRuns run_every_scheme(const Spring& spring, const Vec2& u0, double 
 /// readable (below 1e3), else scientific with 6 digits.
 inline std::string factor_format(double largest) { return largest < 1e3 ? "{:.12f}" : "{:.5e}"; }
 
+/// The spectral radius of one step at h = ωΔt and ζ, or "-" until R(z) is written (ex 2.4).
+inline ReportValue spectral_radius(const Written& written, Scheme s, double h, double zeta) {
+  return written.factors ? ReportValue(spectral_radius(s, h, zeta)) : ReportValue();
+}
+
 /// The largest growth factor a runs table prints: the measured growth of the runs that
-/// finished, and every scheme's spectral radius at h = ωΔt and ζ.
-inline double largest_factor(const SpringRuns& runs, double h, double zeta) {
+/// finished, and, once R(z) is written (`factors`), every scheme's spectral radius at h = ωΔt and ζ.
+inline double largest_factor(const SpringRuns& runs, double h, double zeta, bool factors) {
   double largest = 0;
   for (const auto& [s, run] : runs)
-    largest = std::max({largest, run.diverged() ? 0 : run.growth, spectral_radius(s, h, zeta)});
+    largest = std::max({largest, run.diverged() ? 0 : run.growth, factors ? spectral_radius(s, h, zeta) : 0});
   return largest;
 }
 
@@ -120,14 +146,18 @@ struct CriticalCase {
   double closed_form;   ///< [s]
   const char* formula;  ///< "μ/K", "2/ω", "2√2/ω"
 };
-inline std::vector<CriticalCase> textbook_critical_cases(const Spring& spring) {
+/// Those whose scheme is written.
+inline std::vector<CriticalCase> textbook_critical_cases(const Spring& spring, const Written& written) {
   Spring damped = spring, undamped = spring;
   const double zeta = spring.damping_ratio(), w = spring.omega();
   if (!(zeta > 0 && zeta < 1)) damped.damping = 0.2 * std::sqrt(spring.stiffness * spring.mass);  // ζ = 0.1
   undamped.damping = 0;
-  return {{Scheme::explicit_euler, damped, damped.damping / damped.stiffness, "μ/K"},
-          {Scheme::symplectic_euler, undamped, 2.0 / w, "2/ω"},
-          {Scheme::rk4, undamped, 2.0 * std::sqrt(2.0) / w, "2√2/ω"}};
+  std::vector<CriticalCase> cases;
+  for (const auto& c : {CriticalCase{Scheme::explicit_euler, damped, damped.damping / damped.stiffness, "μ/K"},
+                        {Scheme::symplectic_euler, undamped, 2.0 / w, "2/ω"},
+                        {Scheme::rk4, undamped, 2.0 * std::sqrt(2.0) / w, "2√2/ω"}})
+    if (written.has(c.scheme)) cases.push_back(c);
+  return cases;
 }
 
 /// The extremes: the given spring undamped, critically damped (ζ = 1) and overdamped (ζ = 3),
@@ -157,12 +187,13 @@ struct ExtremeRow {
   const char* label;
   std::vector<ReportValue> amplitudes, divergences;
 };
-inline std::vector<ExtremeRow> measure_extremes(const Spring& given, const Vec2& u0, double dt, long steps) {
+inline std::vector<ExtremeRow> measure_extremes(const Spring& given, const Vec2& u0, double dt, long steps,
+                                               const std::vector<Scheme>& schemes) {
   std::vector<ExtremeRow> rows;
   for (const auto& [label, spring] : extreme_springs(given)) {
     ExtremeRow row{label, {std::string(label), spring.damping_ratio(), spring.omega() * dt},
                    {std::string(label)}};
-    for (const auto& [s, run] : run_every_scheme(spring, u0, dt, steps)) {
+    for (const auto& [s, run] : run_every_scheme(spring, u0, dt, steps, schemes)) {
       if (run.diverged()) {
         row.amplitudes.emplace_back();  // null
         row.divergences.emplace_back(run.trajectory.divergence->step);
@@ -176,9 +207,10 @@ inline std::vector<ExtremeRow> measure_extremes(const Spring& given, const Vec2&
   return rows;
 }
 
-/// A report column per scheme, in all_schemes' order: its name as header, its key, `format`.
-inline std::vector<Column> scheme_columns(std::vector<Column> first, const std::string& format = "{}") {
-  for (Scheme s : all_schemes) first.push_back({name(s), key(s), format});
+/// A report column per scheme of `schemes` (in all_schemes' order): its name as header, its key, `format`.
+inline std::vector<Column> scheme_columns(std::vector<Column> first, const std::vector<Scheme>& schemes,
+                                          const std::string& format = "{}") {
+  for (Scheme s : schemes) first.push_back({name(s), key(s), format});
   return first;
 }
 
@@ -238,7 +270,8 @@ struct StabilityMap {
   std::vector<double> stable_h, stable_zeta, unstable_h, unstable_zeta;  ///< the verdicts
   std::vector<double> boundary_h, boundary_zeta;                         ///< the analytic limit
 };
-inline StabilityMap measure_stability_map(Scheme s) {
+/// The measured verdicts, and the analytic limit when R(z) is written (`factors`).
+inline StabilityMap measure_stability_map(Scheme s, bool factors) {
   StabilityMap map;
   for (int i = 1; i <= 40; ++i) {
     for (int j = 0; j <= 20; ++j) {
@@ -249,7 +282,7 @@ inline StabilityMap measure_stability_map(Scheme s) {
       (blows_up ? map.unstable_zeta : map.stable_zeta).push_back(0.1 * j);
     }
   }
-  for (int j = 0; j <= 200; ++j) {
+  for (int j = 0; factors && j <= 200; ++j) {
     const double zeta = 0.01 * j;
     const double h = stability_limit([&](double x) { return spectral_radius(s, x, zeta); }, 4.0, 400, 1e-6);
     if (h > 0 && std::isfinite(h)) map.boundary_h.push_back(h), map.boundary_zeta.push_back(zeta);

@@ -19,23 +19,29 @@ namespace kit {
 /// u_k → u_{k+1} for `scheme` on `spring` with step dt [s]. The spring is autonomous, so t is
 /// passed as 0.
 inline std::function<Vec2(const Vec2&)> spring_stepper(Scheme scheme, const Spring& spring, double dt) {
-  const AffineSystem<2> system = spring_system(spring);
-  switch (scheme) {
+  switch (scheme) {  // A and b (ex 2.1) only for the schemes that use them
     case Scheme::explicit_euler:
-      return [euler = ExplicitEulerAffine<2>(system, dt)](const Vec2& u) { return euler.step(u); };
+      return [euler = ExplicitEulerAffine<2>(spring_system(spring), dt)](const Vec2& u) {
+        return euler.step(u);
+      };
     case Scheme::implicit_euler:
       return [spring, dt](const Vec2& u) { return implicit_euler_spring_step(spring, u, dt); };
     case Scheme::symplectic_euler:
       return [spring, dt](const Vec2& u) {
         const auto accel = [&](double, const Vec<1>& x, const Vec<1>& v) {
-          return Vec<1>((spring.stiffness * (spring.rest_length - x[0]) - spring.damping * v[0]) / spring.mass);
+          const double force = spring.stiffness * (spring.rest_length - x[0]) - spring.damping * v[0];  // [N]
+          return Vec<1>(force / spring.mass);
         };
         return symplectic_euler_step(accel, 0.0, u, dt);
       };
     case Scheme::midpoint:
-      return [system, dt](const Vec2& u) { return midpoint_step(system, 0.0, u, dt); };
+      return [system = spring_system(spring), dt](const Vec2& u) {
+        return midpoint_step(system, 0.0, u, dt);
+      };
     case Scheme::rk4:
-      return [system, dt](const Vec2& u) { return rk4_step(system, 0.0, u, dt); };
+      return [system = spring_system(spring), dt](const Vec2& u) {
+        return rk4_step(system, 0.0, u, dt);
+      };
   }
   throw std::invalid_argument("unknown scheme");
 }
