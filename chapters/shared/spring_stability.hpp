@@ -101,8 +101,7 @@ struct Written {
 /// Probes each scheme with one step and R(z) at one z; the report names what is not written yet.
 inline Written written_parts(Report& report, const Spring& spring, const Vec2& u0, double dt) {
   Written w;
-  for (Scheme s : all_schemes)
-    if (report.attempt(name(s), [&] { spring_stepper(s, spring, dt)(u0); })) w.schemes.push_back(s);
+  w.schemes = written_schemes(report, spring, u0, dt);
   w.factors = report.attempt("amplification factors R(z)", [] {
     for (Scheme s : all_schemes)  // symplectic Euler has a 2×2 step matrix instead, from kit/
       if (s != Scheme::symplectic_euler) amplification_factor(s, {-0.5, 0.5});

@@ -3,7 +3,9 @@
 // them. Not an exercise: it only wires the schemes of ex 2.1–3.2 to the spring.
 #include <functional>
 #include <stdexcept>
+#include <vector>
 
+#include <kit/report.hpp>
 #include <kit/scheme.hpp>
 #include <kit/spring.hpp>
 
@@ -44,6 +46,15 @@ inline std::function<Vec2(const Vec2&)> spring_stepper(Scheme scheme, const Spri
       };
   }
   throw std::invalid_argument("unknown scheme");
+}
+
+/// The schemes whose exercises are written, each probed with one step of dt [s] from u0; the
+/// report names every other one and the exercise it waits for.
+inline std::vector<Scheme> written_schemes(Report& report, const Spring& spring, const Vec2& u0, double dt) {
+  std::vector<Scheme> schemes;
+  for (Scheme s : all_schemes)
+    if (report.attempt(name(s), [&] { spring_stepper(s, spring, dt)(u0); })) schemes.push_back(s);
+  return schemes;
 }
 
 }  // namespace kit

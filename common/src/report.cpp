@@ -146,7 +146,7 @@ ReportTable Report::table(std::string_view section, std::vector<Column> columns)
 }
 
 void Report::skipped(const std::string& part, const std::string& why) {
-  print(fmt::format("\n[skipped] {}: {}\n", part, why));  // words only: the JSON has the same
+  print(fmt::format("[skipped] {}: {}\n", part, why));  // words only: the JSON has the same
   (*summary_)["skipped"].push_back({{"section", part}, {"reason", why}});
 }
 
