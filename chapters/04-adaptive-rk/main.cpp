@@ -78,8 +78,8 @@ void step_doubling_and_its_trap(kit::Report& report, const kit::OrbitProblem& p,
 // 4. Work against precision: every method on the same problem, in the same process, one harness.
 Curves work_against_precision(kit::ChapterApp& app, const kit::OrbitProblem& p, double h0) {
   const kit::WorkTiming timing;  // every run takes a turn in each round; its time is its fastest
-  const Curves curves = kit::measure_work_precision(kit::all_work_methods(p.f, 0.0, p.y0, p.t_end, h0),
-                                                    p.reference, timing);
+  const auto methods = kit::all_work_methods(app.report(), p.f, 0.0, p.y0, p.t_end, h0);  // those written
+  const Curves curves = kit::measure_work_precision(methods, p.reference, timing);
   app.report().say("work_precision_timing", "\nWork against precision on {problem} (tolerance = rtol = atol; "
                    "fixed RK4: the number of steps; time: fastest of {rounds} interleaved rounds):\n",
                    {{"problem", p.name}, {"rounds", long(timing.rounds)},

@@ -13,6 +13,7 @@
 #include <kit/dopri5.hpp>
 #include <kit/embedded_run.hpp>
 #include <kit/look.hpp>
+#include <kit/report.hpp>
 #include <kit/work_precision.hpp>
 #include <kit/work_precision_methods.hpp>
 
@@ -126,7 +127,7 @@ WorkMethod<N> fixed_rk4_method(Rhs f, double t0, const Vec<N>& y0, double t1, st
 /// rk8pd, Boost.Odeint's dopri5, fixed-step RK4 (3·10³ … 10⁶ steps), and step doubling over
 /// Euler (to 10⁻⁷) and RK2 (to 10⁻¹⁰). The lower orders stop early: their cost explodes.
 template <int N, class Rhs>
-std::vector<WorkMethod<N>> all_work_methods(const Rhs& f, double t0, const Vec<N>& y0, double t1, double h0) {
+std::vector<WorkMethod<N>> every_work_method(const Rhs& f, double t0, const Vec<N>& y0, double t1, double h0) {
   const std::vector<double> tol = decades(3, 12);
   const auto to = [&](int last) { return std::vector<double>(tol.begin(), tol.begin() + last); };
   return {dopri5_method(f, t0, y0, t1, h0, tol),
@@ -139,6 +140,18 @@ std::vector<WorkMethod<N>> all_work_methods(const Rhs& f, double t0, const Vec<N
           fixed_rk4_method(f, t0, y0, t1, {3e3, 1e4, 3e4, 1e5, 3e5, 1e6}),
           step_doubling_method(DoublingBase::euler, f, t0, y0, t1, h0, to(5)),
           step_doubling_method(DoublingBase::midpoint, f, t0, y0, t1, h0, to(8))};
+}
+
+/// The methods of every_work_method whose exercises are written: each is tried once at its loosest
+/// tolerance, and the report names every other one and the exercise it waits for.
+template <int N, class Rhs>
+std::vector<WorkMethod<N>> all_work_methods(Report& report, const Rhs& f, double t0, const Vec<N>& y0, double t1,
+                                            double h0) {
+  std::vector<WorkMethod<N>> written;
+  for (auto& method : every_work_method(f, t0, y0, t1, h0))
+    if (report.attempt(method.label, [&] { method.run(method.tolerances.front()); }))
+      written.push_back(std::move(method));
+  return written;
 }
 
 }  // namespace kit
