@@ -1,0 +1,163 @@
+#!/usr/bin/env python3
+"""A student sees their code work from the first exercise on: every chapter, built on a partly
+solved copy of exercises/, runs every part whose exercises are written, prints the student's
+results for those, and names each other part with the exercise it waits for.
+
+Two trees are built, chapters only, as `./kit --impl DIR run` builds them:
+  - "first": the first exercise of every chapter solved (1.1, 2.1, 3.1, 4.1), the rest stubs;
+  - "rest": the opposite.
+Each chapter must exit 0 with figures on, skip only parts whose exercise is not solved, and
+report the numbers of the parts that are (checked against what the lecture predicts).
+
+Usage: partial_runs.py WORK_DIR
+"""
+import json
+import math
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tools"))
+import exercises  # noqa: E402
+
+CHAPTERS = ["01-free-fall", "02-spring-stability", "03-rk2", "04-adaptive-rk"]
+FIRST = {"1.1", "2.1", "3.1", "4.1"}
+
+
+def write_tree(path, solved):
+    shutil.rmtree(path, ignore_errors=True)
+    for rel, text in exercises.expected_tree(ROOT / "solutions", frozenset(solved)).items():
+        target = path / rel
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(text, encoding="utf-8")
+
+
+def build(tree, build_dir):
+    launcher = ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"] if shutil.which("ccache") else []
+    subprocess.run(["cmake", "--preset", "release", "-B", str(build_dir), f"-DKIT_IMPL={tree}", *launcher],
+                   cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
+    jobs = os.environ.get("KIT_JOBS", str(os.cpu_count() or 2))
+    subprocess.run(["cmake", "--build", str(build_dir), "-j", jobs, "--target", *CHAPTERS], cwd=ROOT, check=True,
+                   stdout=subprocess.DEVNULL)
+
+
+def no_constant(name):
+    raise ValueError(f"the summary holds {name}")
+
+
+def run(build_dir, chapter, out):
+    done = subprocess.run([str(build_dir / "bin" / chapter), "--json", "--out", str(out)], capture_output=True,
+                          text=True, timeout=600)
+    if done.returncode != 0:
+        raise AssertionError(f"{chapter}: exit {done.returncode}: {done.stderr.strip()[:400]}")
+    return json.loads(done.stdout, parse_constant=no_constant)
+
+
+def waits_for(summary):
+    """{exercise id} named by the skipped parts."""
+    ids = set()
+    for entry in summary.get("skipped", []):
+        reason = entry["reason"]
+        assert reason.startswith("ex "), reason
+        ids.add(reason.split()[1])
+    return ids
+
+
+def near(value, expected, tolerance):
+    return isinstance(value, (int, float)) and math.isfinite(value) and abs(value - expected) <= tolerance
+
+
+def expectations(tree):
+    """{chapter: [(what, check(summary) -> bool)]}: the student's own numbers that must show."""
+    if tree == "first":
+        return {
+            "01-free-fall": [
+                ("explicit Euler (the loop, ex 1.1) in every sample, implicit '-'",
+                 lambda s: all(isinstance(r["explicit"], float) and r["implicit"] is None and r["match"] is True
+                               for r in s["samples"])),
+                ("explicit Euler's orders 1 and 2, implicit's none",
+                 lambda s: near(s["convergence"]["slopes"]["global_explicit"], 1, 0.01)
+                 and near(s["convergence"]["slopes"]["local_explicit"], 2, 0.01)
+                 and s["convergence"]["slopes"]["global_implicit"] is None),
+                ("the round-off sweep of explicit Euler", lambda s: len(s["roundoff"]["explicit_double"]["dt"]) > 10),
+            ],
+            "02-spring-stability": [
+                ("midpoint RK2 (ex 3.1) on the student's A and b (ex 2.1)",
+                 lambda s: list(s["runs"]) == ["midpoint"] and s["runs"]["midpoint"]["status"] == "finished"),
+                ("GSL on the student's A and b", lambda s: s["reference_max_gap"] < 1e-9),
+            ],
+            "03-rk2": [
+                ("midpoint RK2 exact on free fall", lambda s: s["free_fall"]["midpoint_relative_error"] < 1e-12),
+                ("midpoint RK2 of order 2", lambda s: near(s["orders"]["midpoint"]["fitted"], 2, 0.05)),
+            ],
+            "04-adaptive-rk": [
+                ("the guarded step doubling (ex 4.1) finishes",
+                 lambda s: s["step_doubling"]["guarded"]["status"] == "finished"),
+                ("step doubling in the work-precision diagram",
+                 lambda s: "step doubling, Euler" in s["work_precision"]),
+            ],
+        }
+    return {
+        "01-free-fall": [
+            ("both matrix forms (ex 1.2, 1.3) on the prediction, the loop '-'",
+             lambda s: all(r["match"] is True and r["explicit_loop"] is None for r in s["samples"])),
+            ("implicit Euler's orders 1 and 2", lambda s: near(s["convergence"]["slopes"]["global_implicit"], 1, 0.01)),
+        ],
+        "02-spring-stability": [
+            ("implicit and symplectic Euler run without A and b",
+             lambda s: {"implicit_euler", "symplectic_euler"} <= set(s["runs"])),
+            ("the critical step of symplectic Euler, 2/ω",
+             lambda s: abs(s["critical"]["symplectic_euler"]["relative_difference"]) < 1e-3),
+        ],
+        "03-rk2": [
+            ("free fall waits for ex 3.1 and ex 1.1", lambda s: s["free_fall"]["midpoint_relative_error"] is None),
+            ("symplectic Euler of order 1", lambda s: near(s["orders"]["symplectic_euler"]["fitted"], 1, 0.05)),
+        ],
+        "04-adaptive-rk": [
+            ("the student's Cash-Karp pair (ex 4.2, 4.3) in the work-precision diagram",
+             lambda s: "Cash-Karp 5(4) (kit)" in s["work_precision"]),
+        ],
+    }
+
+
+def main(argv):
+    work = pathlib.Path(argv[1]).resolve()
+    points = json.loads((ROOT / "tests/grading/points.json").read_text(encoding="utf-8"))["exercises"]
+    every = {e["id"] for e in points}
+    problems = []
+    for tree, solved in [("first", FIRST), ("rest", every - FIRST)]:
+        source, build_dir = work / tree, work / f"{tree}-build"
+        write_tree(source, solved)
+        build(source, build_dir)
+        for chapter in CHAPTERS:
+            try:
+                summary = run(build_dir, chapter, work / f"{tree}-figures" / chapter)
+            except (AssertionError, ValueError, subprocess.TimeoutExpired) as error:
+                problems.append(f"{tree}: {error}")
+                continue
+            wrongly = waits_for(summary) & solved
+            if wrongly:
+                problems.append(f"{tree}: {chapter} skips parts waiting for exercises that are solved: {wrongly}")
+            if not summary.get("skipped"):
+                problems.append(f"{tree}: {chapter} names no part that waits (half the exercises are stubs)")
+            if not list((work / f"{tree}-figures" / chapter).glob("*.png")):
+                problems.append(f"{tree}: {chapter} drew no figure")
+            for what, check in expectations(tree)[chapter]:
+                try:
+                    ok = check(summary)
+                except (KeyError, TypeError) as error:
+                    ok, what = False, f"{what} ({type(error).__name__}: {error})"
+                print(f"{tree}: {chapter}: {'ok' if ok else 'MISSING'}: {what}")
+                if not ok:
+                    problems.append(f"{tree}: {chapter}: {what}")
+            print(f"{tree}: {chapter}: waits for {sorted(waits_for(summary))}")
+    for problem in problems:
+        print("FAILED:", problem)
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
