@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """Write the student edition of the kit: everything a student needs, and no solution.
 
-  student_edition.py KIT_ROOT DESTINATION
+  student_edition.py KIT_ROOT DESTINATION [--without-production]
 
 The edition is the kit's tracked files without solutions/ (and without .git): exercises/ is
 the default implementation, `./kit run`, `./kit test` (the tests that apply without solutions)
 and `./kit grade MYCOPY` work in it. The kit's own production code solves some exercises in
-another form (PRODUCTION below, listed in the edition's README); an edition without it is not
-offered yet, since chapter 4 and the work-precision harness are built on the production DOPRI5.
+another form (PRODUCTION below, listed in the edition's README). With --without-production the
+edition leaves those files out: chapter 4's DOPRI5 then runs on the student's own ex 4.2 and
+ex 4.3 (chapters/shared/adaptive_rk_methods.hpp), and the tests and benchmark of the production
+DOPRI5 are not built.
 
 `check` mode (used by the test): student_edition.py check KIT_ROOT EDITION
 exits 1 when a line of any solution region appears in any file of the edition.
@@ -26,15 +28,19 @@ import exercises  # noqa: E402
 PRODUCTION = {
     "common/include/kit/dopri5.hpp": "ex 4.2 for one tableau (the Dormand-Prince stages), and ex 4.3 in use",
     "common/include/kit/pi_step_control.hpp": "ex 4.3, the PI step-size law, in a latency-conscious form",
+    "common/include/kit/dopri5_work_method.hpp": "the production DOPRI5 in the work-precision harness",
     "tests/common/test_dopri5.cpp": "ex 4.3: dopri5.f's step-size formula written out",
-    "common/src/stability.cpp": "part of ex 2.3: the step matrix of symplectic Euler on the spring",
+    "tests/bench/bench_adaptive.cpp": "the benchmark of the production DOPRI5",
 }
 BANNER = """
 > **Student edition.** This copy has no `solutions/`: `exercises/` is the default
 > implementation. Copy it (`cp -r exercises ~/my-kit-work`), work in your copy, and check it
 > with `./kit grade ~/my-kit-work`. `./kit test` runs the tests that apply without solutions.
-> The kit's own production code solves some exercises another way: {given_away}.
+> {production}
 """
+KEPT = "The kit's own production code solves some exercises another way: {given_away}."
+LEFT_OUT = ("This edition leaves out the kit's production code that solves exercises another way "
+            "({given_away}): chapter 4's DOPRI5 runs on your own ex 4.2 and ex 4.3.")
 MIN_LINE = 20  # shorter solution lines ("return out;") are too common to mean anything
 # A line of arithmetic (a * b, u + dt, …): the method itself, not bookkeeping such as
 # run.step_sizes.push_back(h) that every driver of the kit writes too.
@@ -49,11 +55,13 @@ def tracked_files(root):
             if p.is_file() and not {".git", "build"} & set(p.relative_to(root).parts)]
 
 
-def write_edition(root, destination):
+def write_edition(root, destination, without_production=False):
     if destination.exists():
         sys.exit(f"student-edition: {destination} exists already; name a new folder")
     for rel in tracked_files(root):
         if rel.startswith("solutions/") or not (root / rel).is_file():
+            continue
+        if without_production and rel in PRODUCTION:
             continue
         target = destination / rel
         target.parent.mkdir(parents=True, exist_ok=True)
@@ -69,7 +77,8 @@ def write_edition(root, destination):
     text = readme.read_text(encoding="utf-8")
     title_end = text.index("\n") + 1
     given_away = "; ".join(f"`{path}` ({what})" for path, what in PRODUCTION.items())
-    readme.write_text(text[:title_end] + BANNER.format(given_away=given_away) + text[title_end:], encoding="utf-8")
+    production = (LEFT_OUT if without_production else KEPT).format(given_away=given_away)
+    readme.write_text(text[:title_end] + BANNER.format(production=production) + text[title_end:], encoding="utf-8")
     print(f"student edition written to {destination}")
 
 
@@ -111,10 +120,11 @@ def check(root, edition):
 def main(argv):
     if len(argv) == 4 and argv[1] == "check":
         return check(pathlib.Path(argv[2]).resolve(), pathlib.Path(argv[3]).resolve())
-    if len(argv) != 3:
+    without_production = argv[3:] == ["--without-production"]
+    if len(argv) != 3 and not without_production:
         print(__doc__, file=sys.stderr)
         return 2
-    write_edition(pathlib.Path(argv[1]).resolve(), pathlib.Path(argv[2]).resolve())
+    write_edition(pathlib.Path(argv[1]).resolve(), pathlib.Path(argv[2]).resolve(), without_production)
     return 0
 
 

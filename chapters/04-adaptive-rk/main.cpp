@@ -90,7 +90,7 @@ Curves work_against_precision(kit::ChapterApp& app, const kit::OrbitProblem& p, 
 
 // 5. Stiffness: Van der Pol at large μ, where stability, not accuracy, holds the step down.
 kit::StiffnessRun stiffness(kit::Report& report, double mu) {
-  kit::StiffnessRun s = kit::van_der_pol_stiffness(mu);
+  kit::StiffnessRun s = kit::van_der_pol_stiffness(mu, kit::chapter_dopri5());
   const std::vector<kit::Field> fields = kit::report_fields(s);
   report.say("van_der_pol", s.adapted
       ? "\nVan der Pol, mu = {mu}: two periods (t = {two_periods:.4g}) would take about "
@@ -144,7 +144,7 @@ int main(int argc, char** argv) {
                                                                               options); });
     app.section("step doubling", [&] { step_doubling_and_its_trap(app.report(), p, e_min, e_max, h0); });
     const auto curves = app.section("work-precision", [&] { return work_against_precision(app, p, h0); });
-    const kit::StiffnessRun vdp = stiffness(app.report(), mu);  // the kit's DOPRI5: no exercise needed
+    const kit::StiffnessRun vdp = stiffness(app.report(), mu);  // the kit's DOPRI5, or the student's
     if (!app.options().no_plot && detail && curves) figures(app, p, *detail, options, *curves, vdp);
   });
 }

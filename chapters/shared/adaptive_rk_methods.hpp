@@ -10,12 +10,22 @@
 
 #include <kit/adaptive_run.hpp>
 #include <kit/butcher_tableau.hpp>
-#include <kit/dopri5.hpp>
 #include <kit/embedded_run.hpp>
 #include <kit/look.hpp>
+#include <kit/van_der_pol_stiffness.hpp>
 #include <kit/report.hpp>
 #include <kit/work_precision.hpp>
 #include <kit/work_precision_methods.hpp>
+
+// The kit's production DOPRI5, unless this is a student edition without production code: then
+// chapter 4's DOPRI5 is the student's own (ex 4.2 on the Dormand–Prince tableau, ex 4.3's PI law).
+#if __has_include(<kit/dopri5.hpp>)
+#include <kit/dopri5.hpp>
+#include <kit/dopri5_work_method.hpp>
+#define KIT_PRODUCTION_DOPRI5 1
+#else
+#define KIT_PRODUCTION_DOPRI5 0
+#endif
 
 #include "embedded_rk.hpp"
 #include "explicit_euler.hpp"
@@ -48,9 +58,13 @@ template <int N, class Rhs>
 NamedRun<N> detailed_run(const std::string& method, const Rhs& f, double t0, const Vec<N>& y0, double t1,
                          const EmbeddedOptions& options) {
   if (method == "dopri5") {
+#if KIT_PRODUCTION_DOPRI5
     Dopri5Options o;
-    o.rtol = options.rtol, o.atol = options.atol, o.h0 = options.h0;
+    o.rtol = options.rtol, o.atol = options.atol, o.h0 = options.h0, o.max_steps = options.max_steps;
     return {"DOPRI5", look::dopri5, dopri5_run(f, t0, y0, t1, o)};
+#else
+    return {"DOPRI5 (ex 4.2, 4.3)", look::dopri5, student_embedded_run(f, dormand_prince(), t0, y0, t1, options)};
+#endif
   }
   const bool ck = method == "cash-karp";
   const ButcherTableau& tableau = ck ? cash_karp() : bogacki_shampine();
@@ -93,6 +107,32 @@ WorkMethod<N> embedded_pair_method(const ButcherTableau& tableau, std::string lo
           }};
 }
 
+/// Chapter 4's DOPRI5 in the work-precision diagram: the production one (dopri5_work_method.hpp),
+/// or the student's pair on the Dormand–Prince tableau in an edition without production code.
+template <int N, class Rhs>
+WorkMethod<N> chapter_dopri5_method(Rhs f, double t0, const Vec<N>& y0, double t1, double h0,
+                                    std::vector<double> tolerances) {
+#if KIT_PRODUCTION_DOPRI5
+  return dopri5_method(f, t0, y0, t1, h0, std::move(tolerances));
+#else
+  return embedded_pair_method(dormand_prince(), look::dopri5 + " pt 7 lw 2", f, t0, y0, t1, h0, std::move(tolerances));
+#endif
+}
+
+/// Chapter 4's DOPRI5 for the stiffness run (van_der_pol_stiffness.hpp): the production one from
+/// HINIT's first step, or the student's from h0 = 1e-4.
+inline Dopri5Runner chapter_dopri5() {
+  return [](const VanDerPol& f, const Vec2& y0, double t_end, long max_steps) {
+#if KIT_PRODUCTION_DOPRI5
+    Dopri5Options o;
+    o.rtol = o.atol = 1e-6, o.max_steps = max_steps;
+    return dopri5_run(f, 0.0, y0, t_end, o);
+#else
+    return student_embedded_run(f, dormand_prince(), 0.0, y0, t_end, {1e-6, 1e-6, 1e-4, max_steps});
+#endif
+  };
+}
+
 /// The lecture's step doubling over `base` with E_max = tol and E_min = tol/100 (a ratio that
 /// cannot trap it), from dt0 = h0, at most 5·10⁶ steps.
 template <int N, class Rhs>
@@ -130,7 +170,7 @@ template <int N, class Rhs>
 std::vector<WorkMethod<N>> every_work_method(const Rhs& f, double t0, const Vec<N>& y0, double t1, double h0) {
   const std::vector<double> tol = decades(3, 12);
   const auto to = [&](int last) { return std::vector<double>(tol.begin(), tol.begin() + last); };
-  return {dopri5_method(f, t0, y0, t1, h0, tol),
+  return {chapter_dopri5_method(f, t0, y0, t1, h0, tol),
           embedded_pair_method(cash_karp(), look::cash_karp + " pt 5", f, t0, y0, t1, h0, tol),
           embedded_pair_method(bogacki_shampine(), look::bogacki_shampine + " pt 9", f, t0, y0, t1, h0, to(6)),
           gsl_method(GslStepper::rkck, f, t0, y0, t1, h0, tol),

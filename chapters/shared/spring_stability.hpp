@@ -22,10 +22,23 @@
 
 namespace kit {
 
+/// The matrix M of one step u_{k+1} = M u_k of `scheme` on the unit oscillator (m = 1 kg,
+/// K = 1 N/m, so ω = 1 rad/s and Δt = h; μ = 2ζ; rest length 0, so b = 0), read off the
+/// scheme's own step: its columns are the steps from (1, 0) and (0, 1).
+inline Mat2 step_matrix(Scheme s, double h, double zeta) {
+  Spring unit;
+  unit.mass = 1, unit.stiffness = 1, unit.rest_length = 0, unit.damping = 2 * zeta;
+  const auto step = spring_stepper(s, unit, h);
+  Mat2 m;
+  m.col(0) = step(Vec2(1, 0)), m.col(1) = step(Vec2(0, 1));
+  return m;
+}
+
 /// Spectral radius of one step of `scheme` on the oscillator, from its analysis: max |R(z)| over
-/// z = λΔt (ex 2.4), or the step matrix for symplectic Euler. h = ωΔt, ζ the damping ratio.
+/// z = λΔt (ex 2.4), or for symplectic Euler, which has no scalar R, the step matrix of the
+/// student's own step (ex 2.3). h = ωΔt, ζ the damping ratio.
 inline double spectral_radius(Scheme s, double h, double zeta) {
-  if (s == Scheme::symplectic_euler) return spectral_radius(symplectic_euler_step_matrix(h, zeta));
+  if (s == Scheme::symplectic_euler) return spectral_radius(step_matrix(s, h, zeta));
   return spectral_radius([s](std::complex<double> z) { return amplification_factor(s, z); }, h, zeta);
 }
 

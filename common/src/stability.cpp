@@ -22,13 +22,6 @@ double spectral_radius(const std::function<std::complex<double>(std::complex<dou
   return std::max(std::abs(amplification(z1)), std::abs(amplification(z2)));
 }
 
-Mat2 symplectic_euler_step_matrix(double h, double zeta) {
-  // w = v/ω: w' = w − h y − 2ζh w, then y' = y + h w'.
-  Mat2 m;
-  m << 1.0 - h * h, h * (1.0 - 2.0 * zeta * h), -h, 1.0 - 2.0 * zeta * h;
-  return m;
-}
-
 double stability_limit(const std::function<double(double)>& radius, double h_max, int samples, double rel_tol) {
   // A tolerance of 1e-13 absorbs round-off in an exactly neutral radius (symplectic Euler's 1)
   // while still seeing weak growth such as midpoint RK2's (ωΔt)⁴/8 from ωΔt = 0.01 on.

@@ -5,8 +5,6 @@
 #include <limits>
 #include <vector>
 
-#include <kit/adaptive_rk_models.hpp>
-#include <kit/dopri5.hpp>
 #include <kit/run_fields.hpp>
 
 namespace kit {
@@ -19,17 +17,14 @@ double median(std::vector<double> v) {
 }
 }  // namespace
 
-StiffnessRun van_der_pol_stiffness(double mu, long budget) {
+StiffnessRun van_der_pol_stiffness(double mu, const Dopri5Runner& dopri5, long budget) {
   StiffnessRun out;
   out.mu = mu;
   out.budget = budget;
   // The relaxation period (3 − 2 ln 2)·μ for large μ; the harmonic 2π for small μ.
   out.two_periods = std::max(2 * (3 - 2 * std::log(2.0)) * mu, 4 * M_PI);
   out.predicted_steps = 4 * (std::log(2.0) + 0.75) * mu * mu / dopri5_real_stability_boundary;
-  Dopri5Options options;
-  options.rtol = options.atol = 1e-6;
-  options.max_steps = budget;
-  out.run = dopri5_run(VanDerPol{mu}, 0.0, VanDerPol::initial_state(), out.two_periods, options);
+  out.run = dopri5(VanDerPol{mu}, VanDerPol::initial_state(), out.two_periods, budget);
   out.horizon = out.run.accepted.t.back();
   out.adapted = out.run.status == RunStatus::too_many_steps;
   std::vector<double> h_lambda;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <kit/adaptive_rk_models.hpp>
+#include <kit/dopri5_work_method.hpp>
 #include <kit/reference_solver.hpp>
 #include <kit/table.hpp>
 #include <kit/work_precision.hpp>

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <kit/dopri5.hpp>
+#include <kit/dopri5_work_method.hpp>
 #include <kit/embedded_run.hpp>
 #include <kit/free_fall.hpp>
 #include <kit/pi_step_control.hpp>
@@ -192,4 +193,18 @@ TEST_CASE("an unreachable tolerance, a collapsing step and an exhausted step bud
   const auto short_budget = kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
   CHECK(short_budget.status == kit::RunStatus::too_many_steps);
   CHECK(short_budget.stats.steps + short_budget.stats.rejected == 50);
+}
+
+TEST_CASE("measured by the harness, the kit's DOPRI5 takes Hairer's counts on Arenstorf: 985, 2161 and 5047 evaluations") {
+  const kit::Vec4 y0 = kit::Arenstorf::initial_state();
+  const auto curve = kit::measure_work_precision<4>(
+      {kit::dopri5_method(kit::Arenstorf{}, 0.0, y0, kit::Arenstorf::period, 1e-4, {1e-6, 1e-8, 1e-10})}, y0, {1, 0.0})[0];
+  const std::vector<long> evaluations{985, 2161, 5047}, steps{164, 360, 841}, rejected{23, 21, 0};  // ANCHORS.md
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(curve.points[i].rhs_evals == evaluations[i]);
+    CHECK(curve.points[i].attempts() == steps[i]);
+    CHECK(curve.points[i].rejected == rejected[i]);
+    CHECK(curve.points[i].finished);
+  }
+  CHECK(curve.points[0].error == Approx(4.4e-2).epsilon(0.02));  // max |y(T) − y0|, Hairer's 4.4e-2
 }

@@ -28,4 +28,31 @@ g = json.load(open(sys.argv[1], encoding="utf-8"))
 print(f"self-grade in the student edition: {g['points']} / {g['max_points']}")
 sys.exit(0 if g["points"] == g["max_points"] and g["sandboxed"] else 1)
 PY
+
+# Without production code: none of its files, and chapter 4's DOPRI5 is the student's own
+# (ex 4.2 on the Dormand–Prince tableau with ex 4.3's PI law), which takes Hairer's 985
+# evaluations on Arenstorf at 1e-6 exactly as the production one does (ANCHORS.md).
+cd "$kit_root"
+./kit student-edition "$work/bare" --without-production >/dev/null
+for file in common/include/kit/dopri5.hpp common/include/kit/pi_step_control.hpp \
+            common/include/kit/dopri5_work_method.hpp tests/common/test_dopri5.cpp tests/bench/bench_adaptive.cpp; do
+  [ ! -e "$work/bare/$file" ] || { echo "FAILED: the edition without production code holds $file"; exit 1; }
+done
+grep -q "runs on your own ex 4.2 and ex 4.3" "$work/bare/README.md" || { echo "FAILED: its README does not say so"; exit 1; }
+cd "$work/bare"
+./kit --impl "$work/mine" run 04-adaptive-rk -- --no-plot --quiet >/dev/null
+bare_build=$(./kit --impl "$work/mine" build-dir)
+"$bare_build/bin/04-adaptive-rk" --no-plot --json >"$work/bare-04.json"
+python3 - "$work/bare-04.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1], encoding="utf-8"))
+detail, vdp = s["detail"], s["van_der_pol"]
+print(f"without production: {detail['method']}, {detail['rhs_evals']} evaluations; Van der Pol {vdp['accepted']} steps")
+ok = (detail["method"] == "DOPRI5 (ex 4.2, 4.3)" and detail["rhs_evals"] == 985 and detail["rejected"] == 23
+      and "Dormand-Prince 5(4) (kit)" in s["work_precision"] and "DOPRI5 (kit)" not in s["work_precision"]
+      and vdp["accepted"] > 10000 and not s.get("skipped"))
+sys.exit(0 if ok else 1)
+PY
+cmake --build "$bare_build" --target test_common >/dev/null
+ctest --test-dir "$bare_build" -R '^common$' --output-on-failure
 echo "student edition: ok"

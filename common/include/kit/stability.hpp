@@ -37,10 +37,6 @@ std::pair<std::complex<double>, std::complex<double>> oscillator_z(double h, dou
 double spectral_radius(const std::function<std::complex<double>(std::complex<double>)>& amplification,
                        double h, double zeta);
 
-/// Symplectic Euler's step matrix on the oscillator, in (y, v/ω) so that it depends on h = ωΔt
-/// and ζ only: v first, with the old x and v in the force, then x with the new v:
-///   [[1 − h², h (1 − 2ζh)], [−h, 1 − 2ζh]].
-Mat2 symplectic_euler_step_matrix(double h, double zeta);
 
 /// The smallest h in [0.01, h_max] where `radius(h)` exceeds 1 (+1e-13 for round-off): the
 /// stability limit in ωΔt. Returns 0 when already unstable at h = 0.01 (read: unstable for

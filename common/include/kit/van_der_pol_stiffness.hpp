@@ -1,12 +1,15 @@
 #pragma once
-// What an explicit method does on a stiff problem: the production DOPRI5 on Van der Pol's
+// What an explicit method does on a stiff problem: DOPRI5 on Van der Pol's
 // oscillator (adaptive_rk_models.hpp) at large μ, where stability, not accuracy, holds the step
 // down (Hairer & Wanner, Solving ODEs II, IV.1–2). On the slow branches the Jacobian's stiff
 // eigenvalue is about λ = −μ(x² − 1); if stability sets the step, h·|λ| sits at DOPRI5's
 // stability boundary on the negative real axis, 3.31 (ANCHORS.md).
-//   μ, step budget → StiffnessRun (the run, median h, median h·|λ| on the slow branches, verdict)
+//   μ, a DOPRI5, step budget → StiffnessRun (the run, median h, median h·|λ| on the slow
+//   branches, verdict). The DOPRI5 is the caller's: the production one, or a student's.
+#include <functional>
 #include <vector>
 
+#include <kit/adaptive_rk_models.hpp>
 #include <kit/adaptive_run.hpp>
 #include <kit/report.hpp>
 #include <kit/state.hpp>
@@ -31,9 +34,14 @@ struct StiffnessRun {
   bool stability_bound = false;  ///< median_h_lambda within 15% of the stability boundary
 };
 
-/// DOPRI5 on Van der Pol with `mu` over two periods, or over as much of them as `budget` steps
+/// A DOPRI5 run of Van der Pol from (t = 0, y0) to t_end at rtol = atol = 1e-6, within
+/// `max_steps` steps (accepted + rejected).
+using Dopri5Runner =
+    std::function<AdaptiveRun<Vec2>(const VanDerPol& f, const Vec2& y0, double t_end, long max_steps)>;
+
+/// `dopri5` on Van der Pol with `mu` over two periods, or over as much of them as `budget` steps
 /// cover (a large μ is never refused: the run says how far it got).
-StiffnessRun van_der_pol_stiffness(double mu, long budget = 2'000'000);
+StiffnessRun van_der_pol_stiffness(double mu, const Dopri5Runner& dopri5, long budget = 2'000'000);
 
 /// Every value above as report fields (run_fields.hpp for the run), plus "boundary" = 3.31 and
 /// "verdict", the sentence that says which of stability and accuracy sets the step.

@@ -1,9 +1,9 @@
 #pragma once
-// The methods of the kit's work-precision diagrams that need no student code, as WorkMethod
-// (work_precision.hpp): the production DOPRI5 (dopri5.hpp) and the peers run in the same
-// process (peers.hpp), each at rtol = atol = tol from the first step h0, on y' = f(t, y),
-// y(t0) = y0, up to t1. Chapter 4 adds the methods students write
-// (chapters/shared/adaptive_rk_methods.hpp); `./kit bench adaptive` uses these alone.
+// The peers of the kit's work-precision diagrams, as WorkMethod (work_precision.hpp): GSL and
+// Boost.Odeint run in the same process (peers.hpp), each at rtol = atol = tol from the first
+// step h0, on y' = f(t, y), y(t0) = y0, up to t1. The production DOPRI5 is in
+// dopri5_work_method.hpp; chapter 4 adds the methods students write
+// (chapters/shared/adaptive_rk_methods.hpp).
 #include <cmath>
 #include <string>
 #include <utility>
@@ -11,24 +11,11 @@
 
 #include <fmt/format.h>
 
-#include <kit/dopri5.hpp>
 #include <kit/look.hpp>
 #include <kit/peers.hpp>
 #include <kit/work_precision.hpp>
 
 namespace kit {
-
-/// The kit's DOPRI5: accepted and rejected steps; unfinished when it stops before t1.
-template <int N, class Rhs>
-WorkMethod<N> dopri5_method(Rhs f, double t0, const Vec<N>& y0, double t1, double h0, std::vector<double> tolerances) {
-  return {"DOPRI5 (kit)", look::dopri5 + " pt 7 lw 2", std::move(tolerances), [=](double tol) {
-            Dopri5Options options;
-            options.rtol = options.atol = tol;
-            options.h0 = h0;
-            const auto r = dopri5(f, t0, y0, t1, options);
-            return WorkRun<N>{r.y, r.stats.rhs_evals, r.stats.steps, r.stats.rejected, r.status == RunStatus::finished};
-          }};
-}
 
 /// The style of a GSL stepper's curve.
 inline std::string gsl_look(GslStepper stepper) {
