@@ -11,6 +11,7 @@
 #include <kit/free_fall_flags.hpp>
 #include <kit/step_count.hpp>
 
+#include "free_fall_costs.hpp"
 #include "free_fall_euler.hpp"
 #include "free_fall_figures.hpp"
 
@@ -87,6 +88,7 @@ kit::Roundoff roundoff(kit::Report& report, const Setup& s) {
       {"max_steps", doubles.max_steps}, {"raised", doubles.raised()}, {"float_dt_min", floats.dt_min},
       {"float_max_steps", floats.max_steps}};
   report.store("roundoff/sweep", plan);
+  kit::announce_roundoff(report, doubles, floats, kit::roundoff_costs(s.fall, s.t_end));  // or refuses
   if (doubles.raised() || floats.raised())
     report.say("roundoff/sweep", "\nThe round-off sweep takes at most {max_steps} steps a run "
                "({float_max_steps} in float):\nover T = {t_end} s, its smallest dt is {dt_min:.3g} s "

@@ -153,6 +153,7 @@ inline Roundoff measure_roundoff(const FreeFall& fall, const StepSweep& doubles,
     r.cost.push_back(c);
     if (m > floats.most_steps()) continue;
     r.floats.add(h, std::abs(explicit_error<float>(fall, t_end, m)));
+    const ProgressWeight slower(roundoff_implicit_weight);  // progress.hpp: its steps cost more
     r.floats_implicit.add(h, std::abs(implicit_error<float>(fall, t_end, m)));
   }
   return r;

@@ -5,8 +5,11 @@
 #include <limits>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include <kit/adaptive_rk_models.hpp>
 #include <kit/dopri5.hpp>
+#include <kit/progress.hpp>
 #include <kit/run_fields.hpp>
 
 namespace kit {
@@ -41,6 +44,22 @@ StiffnessRun van_der_pol_stiffness(double mu, long budget) {
   out.median_h_lambda = median(h_lambda);
   out.stability_bound = std::abs(out.median_h_lambda / dopri5_real_stability_boundary - 1) < 0.15;
   return out;
+}
+
+RunEstimate van_der_pol_estimate(double mu, long budget) {
+  const double predicted = 4 * (std::log(2.0) + 0.75) * mu * mu / dopri5_real_stability_boundary;
+  const double steps = std::min(predicted, static_cast<double>(budget));
+  Dopri5Options options;
+  options.rtol = options.atol = 1e-6;
+  options.max_steps = 2000;  // the calibration: a short stretch of the same run
+  const auto run = [&](long) { return dopri5_run(VanDerPol{mu}, 0.0, VanDerPol::initial_state(), 1e9, options); };
+  return {steps, seconds_per_step(run, 2000), 48 * steps};
+}
+
+StiffnessRun van_der_pol_stiffness(Report& report, double mu, long budget) {
+  const ProgressTask progress("stiffness (Van der Pol)");
+  announce_run(report, "van_der_pol", "Van der Pol's run", van_der_pol_estimate(mu, budget), fmt::format("--mu {}", mu));
+  return van_der_pol_stiffness(mu, budget);
 }
 
 std::vector<Field> report_fields(const StiffnessRun& s) {
