@@ -14,7 +14,8 @@ std::string describe_bytes(double bytes) {
   if (bytes < 1e6) return "under 1 MB";
   if (bytes < 1e9) return fmt::format("{:.0f} MB", bytes / 1e6);
   if (bytes < 1e12) return fmt::format("{:.2g} GB", bytes / 1e9);
-  return fmt::format("{:.2g} TB", bytes / 1e12);
+  if (bytes < 1e15) return fmt::format("{:.2g} TB", bytes / 1e12);
+  return fmt::format("{:.2g} PB", bytes / 1e15);
 }
 
 std::string describe(const RunEstimate& e) {

@@ -15,6 +15,7 @@ TEST_CASE("an estimate is its steps times the cost of a step; memory and time fo
   CHECK(kit::describe_bytes(5e5) == "under 1 MB");
   CHECK(kit::describe_bytes(2.1e9) == "2.1 GB");
   CHECK(kit::describe_bytes(3e13) == "30 TB");
+  CHECK(kit::describe_bytes(1.6e16) == "16 PB");
   CHECK_FALSE(kit::over_limits(e));
   CHECK(kit::over_limits({1e12, 1e-9, 0}));     // 1000 s: over 10 min
   CHECK(kit::over_limits({1e3, 1e-9, 5e9}));    // 5 GB: over 4 GB
