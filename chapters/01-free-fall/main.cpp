@@ -11,6 +11,7 @@
 #include <kit/free_fall_flags.hpp>
 #include <kit/step_count.hpp>
 
+#include "free_fall_costs.hpp"
 #include "free_fall_euler.hpp"
 #include "free_fall_figures.hpp"
 
@@ -83,11 +84,9 @@ kit::EulerOrders orders(kit::Report& report, const Setup& s) {
 kit::Roundoff roundoff(kit::Report& report, const Setup& s) {
   const auto doubles = kit::budget_sweep(s.t_end, 0.1, s.dt_min, 2'000'000'000);
   const auto floats = kit::budget_sweep(s.t_end, 0.1, 1e-7, 100'000'000);  // float stagnates below 1e-7 s
-  const std::vector<kit::Field> plan{{"t_end", s.t_end}, {"dt_max", doubles.dt_max},
-      {"dt_min_requested", doubles.dt_min_requested}, {"dt_min", doubles.dt_min},
-      {"max_steps", doubles.max_steps}, {"raised", doubles.raised()}, {"float_dt_min", floats.dt_min},
-      {"float_max_steps", floats.max_steps}};
+  const std::vector<kit::Field> plan = kit::sweep_plan(doubles, floats);  // T, both Δt ranges, budgets
   report.store("roundoff/sweep", plan);
+  kit::announce_roundoff(report, doubles, floats, kit::roundoff_costs(s.fall, s.t_end));  // or refuses
   if (doubles.raised() || floats.raised())
     report.say("roundoff/sweep", "\nThe round-off sweep takes at most {max_steps} steps a run "
                "({float_max_steps} in float):\nover T = {t_end} s, its smallest dt is {dt_min:.3g} s "

@@ -18,9 +18,8 @@ struct Setup {
   long n = 0;                     // steps of dt over [0, t_end]
   kit::Written written;           // the schemes, and R(z), whose exercises are written
   double h() const { return spring.omega() * dt; }  // ω·Δt; below, the spectral radius of one step at Δt
-  kit::ReportValue radius(Scheme x) const {          // "-" until R(z) is written (ex 2.4)
-    return kit::spectral_radius(written, x, h(), spring.damping_ratio());
-  }
+  double zeta() const { return spring.damping_ratio(); }
+  kit::ReportValue radius(Scheme x) const { return kit::spectral_radius(written, x, h(), zeta()); }  // or "-"
 };
 
 // 1. The system u' = A u + b: its frequency, damping ratio and eigenvalues.

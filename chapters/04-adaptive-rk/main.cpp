@@ -90,7 +90,7 @@ Curves work_against_precision(kit::ChapterApp& app, const kit::OrbitProblem& p, 
 
 // 5. Stiffness: Van der Pol at large μ, where stability, not accuracy, holds the step down.
 kit::StiffnessRun stiffness(kit::Report& report, double mu) {
-  kit::StiffnessRun s = kit::van_der_pol_stiffness(mu, kit::chapter_dopri5());
+  kit::StiffnessRun s = kit::van_der_pol_stiffness(report, mu, kit::chapter_dopri5());  // estimate first
   const std::vector<kit::Field> fields = kit::report_fields(s);
   report.say("van_der_pol", s.adapted
       ? "\nVan der Pol, mu = {mu}: two periods (t = {two_periods:.4g}) would take about "

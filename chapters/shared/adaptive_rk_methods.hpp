@@ -82,7 +82,9 @@ AdaptiveRun<Vec<N>> counted_step_doubling(DoublingBase base, const Rhs& f, doubl
                                           const StepDoubling& options) {
   long evaluations = 0;
   const CountingRhs<Rhs> counted{f, evaluations};
+  ProgressCounter progress;  // the trials, on the progress line
   const auto step = [&](double t, const Vec<N>& y, double dt) {
+    progress.add(1);
     return base == DoublingBase::midpoint ? midpoint_step(counted, t, y, dt) : explicit_euler_step(counted, t, y, dt);
   };
   AdaptiveRun<Vec<N>> run = step_doubling(step, t0, y0, t1, options);

@@ -173,6 +173,15 @@ struct Roundoff {
   std::vector<CostPoint> cost;  ///< what each double run cost, one per point of `doubles`
 };
 
+/// What the round-off sweep will do, as report fields: T [s], the double sweep's Δt range [s]
+/// (asked for and used), its budget of steps a run and whether it raised the smallest Δt, and
+/// the float sweep's smallest Δt [s] and budget.
+inline std::vector<Field> sweep_plan(const StepSweep& doubles, const StepSweep& floats) {
+  return {{"t_end", doubles.t_end}, {"dt_max", doubles.dt_max}, {"dt_min_requested", doubles.dt_min_requested},
+          {"dt_min", doubles.dt_min}, {"max_steps", doubles.max_steps}, {"raised", doubles.raised()},
+          {"float_dt_min", floats.dt_min}, {"float_max_steps", floats.max_steps}};
+}
+
 /// Runs explicit Euler in double for every step count of `doubles`, and both Euler schemes in
 /// float for those counts that `floats` allows (float stagnates long before: x + Δt·v rounds
 /// back to x, so its sweep stops at a larger step). Both sweeps cover the same T. A scheme whose
@@ -194,6 +203,7 @@ inline Roundoff measure_roundoff(Report& report, const FreeFall& fall, const Ste
     }
   });
   report.attempt("implicit Euler's round-off", [&] {
+    const ProgressWeight slower(roundoff_implicit_weight);  // progress.hpp: its steps cost more
     for (long m : doubles.counts(4))
       if (m <= floats.most_steps())
         r.floats_implicit.add(t_end / double(m), std::abs(implicit_error<float>(fall, t_end, m)));

@@ -11,6 +11,29 @@
 
 namespace kit {
 
+namespace {
+/// Writes to `target`, but first erases the progress line from the terminal, so that the
+/// chapter's text and the line never mix.
+class ClearingBuffer : public std::streambuf {
+ public:
+  explicit ClearingBuffer(std::streambuf* target) : target_(target) {}
+
+ protected:
+  int overflow(int c) override {
+    ProgressTask::clear_line();
+    return c == traits_type::eof() ? traits_type::not_eof(c) : target_->sputc(traits_type::to_char_type(c));
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    ProgressTask::clear_line();
+    return target_->sputn(s, n);
+  }
+  int sync() override { return target_->pubsync(); }
+
+ private:
+  std::streambuf* target_;
+};
+}  // namespace
+
 void check_output_folder(const std::string& dir) {
   namespace fs = std::filesystem;
   if (dir.empty()) throw UsageError("--out '': expected a folder name (or --no-plot to write no figure)");
@@ -44,6 +67,8 @@ ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::st
   // For the flag-table test: every numeric flag with its range, as JSON; not in --help.
   app_.add_flag("--flag-table", flag_table_requested_, "")->group("");
   summary_["chapter"] = chapter_;
+  stdout_buffer_ = std::make_unique<ClearingBuffer>(std::cout.rdbuf());
+  stdout_.rdbuf(stdout_buffer_.get());
 }
 
 void ChapterApp::add_real(const std::string& flag, double& value, const std::string& help, RealRange range) {
@@ -86,7 +111,7 @@ void ChapterApp::add_count(const std::string& flag, long& value, const std::stri
 }
 
 std::ostream& ChapterApp::text() {
-  return (options_.json || options_.quiet) ? null_ : std::cout;
+  return (options_.json || options_.quiet) ? null_ : stdout_;
 }
 
 void ChapterApp::figure(const Figure& fig) {
@@ -97,6 +122,7 @@ void ChapterApp::figure(const Figure& fig) {
   figure_options.show = options_.show;
   const FigureFiles files = write_figure(fig, figure_options);
   for (const auto& file : files.files) summary_["figures"][fig.name].push_back(file.string());
+  if (!files.notes.empty()) ProgressTask::clear_line();
   for (const auto& note : files.notes) std::cerr << chapter_ << ": " << note << "\n";
 }
 

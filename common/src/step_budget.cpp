@@ -28,4 +28,24 @@ StepSweep budget_sweep(double t_end, double dt_max, double dt_min, long max_step
   return {t_end, dt_max, dt_min, std::max(dt_min, t_end / static_cast<double>(max_steps)), max_steps};
 }
 
+RunEstimate roundoff_estimate(const StepSweep& doubles, const StepSweep& floats, const RoundoffCosts& costs) {
+  double steps = 0, seconds = 0;
+  const std::vector<long> counts = doubles.counts(4);
+  for (long m : counts) {
+    const bool in_float = m <= floats.most_steps();
+    steps += static_cast<double>(m) * (in_float ? 3 : 1);
+    seconds += static_cast<double>(m) *
+               (costs.explicit_double + (in_float ? costs.explicit_float + costs.implicit_float : 0.0));
+  }
+  const double per_step = steps > 0 ? seconds / steps : 0.0;
+  const double work = costs.explicit_double > 0 ? seconds / costs.explicit_double : steps;
+  return {steps, per_step, 256.0 * static_cast<double>(counts.size()), work};
+}
+
+void announce_roundoff(Report& report, const StepSweep& doubles, const StepSweep& floats, const RoundoffCosts& costs) {
+  announce_run(report, "roundoff", "The round-off sweep", roundoff_estimate(doubles, floats, costs),
+               fmt::format("--t-end {} s, --dt-min {} s", doubles.t_end, doubles.dt_min_requested));
+  roundoff_implicit_weight = costs.explicit_double > 0 ? costs.implicit_float / costs.explicit_double : 1.0;
+}
+
 }  // namespace kit

@@ -5,6 +5,9 @@
 #include <limits>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include <kit/progress.hpp>
 #include <kit/run_fields.hpp>
 
 namespace kit {
@@ -36,6 +39,21 @@ StiffnessRun van_der_pol_stiffness(double mu, const Dopri5Runner& dopri5, long b
   out.median_h_lambda = median(h_lambda);
   out.stability_bound = std::abs(out.median_h_lambda / dopri5_real_stability_boundary - 1) < 0.15;
   return out;
+}
+
+RunEstimate van_der_pol_estimate(double mu, const Dopri5Runner& dopri5, long budget) {
+  const double predicted = 4 * (std::log(2.0) + 0.75) * mu * mu / dopri5_real_stability_boundary;
+  const double steps = std::min(predicted, static_cast<double>(budget));
+  // The calibration: a short stretch (2000 steps) of the same run.
+  const auto run = [&](long) { return dopri5(VanDerPol{mu}, VanDerPol::initial_state(), 1e9, 2000); };
+  return {steps, seconds_per_step(run, 2000), 48 * steps};
+}
+
+StiffnessRun van_der_pol_stiffness(Report& report, double mu, const Dopri5Runner& dopri5, long budget) {
+  const ProgressTask progress("stiffness (Van der Pol)");
+  announce_run(report, "van_der_pol", "Van der Pol's run", van_der_pol_estimate(mu, dopri5, budget),
+               fmt::format("--mu {}", mu));
+  return van_der_pol_stiffness(mu, dopri5, budget);
 }
 
 std::vector<Field> report_fields(const StiffnessRun& s) {

@@ -114,3 +114,17 @@ TEST_CASE("chapter 2 answers bad input with exit 2, a message naming the flag, a
                                           {{"--damping", "-0.5"}, "--damping"}, {{"--bogus"}, "--bogus"},
                                           {{"--x0", "1", "--rest-length", "1"}, "--x0"}});
 }
+
+TEST_CASE("chapter 2 refuses a valid run too large to record with exit 2, its memory estimate, and no file") {
+  // Every flag is in its range, but 1e5 s in steps of 1e-9 s is 1e14 steps to record.
+  kit::test::TempDir out("ch02-huge");
+  const auto target = out.path() / "figures";
+  const auto result = kit::test::run_process(binary, {"--t-end", "1e5", "--dt", "1e-9", "--out", target.string()});
+  INFO(result.err);
+  CHECK(result.exit_code == 2);
+  CHECK_THAT(result.err, Catch::Contains("--t-end 100000 s with --dt 1e-09 s is 1e+14 steps") &&
+                             Catch::Contains("recording them would take 16 PB") &&
+                             Catch::Contains("at most 1000000 steps, 160 MB, are recorded"));
+  CHECK(result.out.empty());
+  CHECK_FALSE(std::filesystem::exists(target));
+}

@@ -22,3 +22,20 @@ TEST_CASE("T/dt not whole, under one step or over the limit: a usage error namin
     }
   }
 }
+
+TEST_CASE("a run past the limit is refused with the memory it would take") {
+  try {
+    kit::require_whole_steps(1e4, 1e-6, 1'000'000, 100.0);  // 1e10 steps of 100 B
+    FAIL("no usage error");
+  } catch (const kit::UsageError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("--t-end 10000 s with --dt 1e-06 s is 1e+10 steps") &&
+                             Catch::Contains("recording them would take 1 TB") &&
+                             Catch::Contains("at most 1000000 steps, 100 MB, are recorded"));
+  }
+  try {  // not whole, but within the limit: no estimate
+    kit::require_whole_steps(1.0, 0.3, 1'000'000);
+    FAIL("no usage error");
+  } catch (const kit::UsageError& e) {
+    CHECK_THAT(e.what(), !Catch::Contains("recording"));
+  }
+}

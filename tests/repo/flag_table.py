@@ -8,6 +8,10 @@ the two ends of its range (just inside an open end), one past them for whole num
 flag at its lower end at once, every flag at its upper end at once, and a fixed sample of pairs
 of extremes. New chapters and new flags are covered with no extra work.
 
+Each single-flag case also runs as a person would, without --json: the same exit code, no
+nan or inf on stdout (whole words, any case: nan, -nan, inf, -inf, infinity), and on exit 2 the
+message on stderr names the flag (under --json as well).
+
 Usage: flag_table.py BIN_DIR [--seconds S]
 """
 import concurrent.futures
@@ -16,10 +20,12 @@ import json
 import math
 import pathlib
 import random
+import re
 import subprocess
 import sys
 
 LIMIT = 1e300  # a range end beyond this is "no bound": its extremes are 1e308 and -1e308
+NON_FINITE = re.compile(r"(?<![\w])[-+]?(nan|inf|infinity)(?![\w])", re.IGNORECASE)
 
 
 def inside(value, is_open, toward):
@@ -62,29 +68,58 @@ def cases_for(table):
     return cases
 
 
-def run(binary, case, seconds):
-    args = [str(binary), "--no-plot", "--json"]
+def run_once(binary, case, seconds, json_mode):
+    """(exit code, stdout, stderr), or a problem (a string) when it did not end in time."""
+    args = [str(binary), "--no-plot"] + (["--json"] if json_mode else [])
     for flag, value in case:
         args += [flag, value]
-    words = " ".join(f"{f} {v!r}" for f, v in case)
     try:
         done = subprocess.run(args, capture_output=True, text=True, timeout=seconds)
     except subprocess.TimeoutExpired:
-        return f"{binary.name} {words}: still running after {seconds} s"
-    if done.returncode == 2:
-        if not done.stderr.strip():
-            return f"{binary.name} {words}: exit 2 without a message"
-        return None
-    if done.returncode != 0:
-        return f"{binary.name} {words}: exit {done.returncode}: {done.stderr.strip()[:300]}"
-    try:
-        summary = json.loads(done.stdout)
-    except ValueError:
-        return f"{binary.name} {words}: exit 0 but stdout is not one JSON object: {done.stdout[:200]!r}"
-    text = json.dumps(summary)
-    if "NaN" in text or "Infinity" in text:
-        return f"{binary.name} {words}: the summary holds NaN or Infinity"
-    return None
+        return f"still running after {seconds} s"
+    return done.returncode, done.stdout, done.stderr
+
+
+def run(binary, case, seconds):
+    """The problems of one case: its --json run and, for a single flag, its text run."""
+    words = " ".join(f"{f} {v!r}" for f, v in case)
+    name = f"{binary.name} {words}"
+    single = case[0][0] if len(case) == 1 else None
+    problems = []
+    first = run_once(binary, case, seconds, json_mode=True)
+    if isinstance(first, str):
+        return [f"{name}: {first}"]
+    code, out, err = first
+    if code == 2:
+        if not err.strip():
+            problems.append(f"{name}: exit 2 without a message")
+        elif single and single not in err:
+            problems.append(f"{name}: exit 2, but the message does not name {single}: {err.strip()[:300]}")
+    elif code != 0:
+        return [f"{name}: exit {code}: {err.strip()[:300]}"]
+    else:
+        try:
+            summary = json.loads(out)
+            text = json.dumps(summary)
+            if "NaN" in text or "Infinity" in text:
+                problems.append(f"{name}: the summary holds NaN or Infinity")
+        except ValueError:
+            problems.append(f"{name}: exit 0 but stdout is not one JSON object: {out[:200]!r}")
+    if not single:
+        return problems
+    second = run_once(binary, case, seconds, json_mode=False)  # the human text
+    if isinstance(second, str):
+        return problems + [f"{name} (text): {second}"]
+    text_code, text_out, text_err = second
+    if text_code != code:
+        problems.append(f"{name} (text): exit {text_code}, but {code} under --json: {text_err.strip()[:300]}")
+    found = NON_FINITE.search(text_out)
+    if found:
+        line = next(l for l in text_out.splitlines() if found.group(0) in l)
+        problems.append(f"{name} (text): stdout prints {found.group(0)!r}: {line.strip()[:200]!r}")
+    if text_code == 2 and single not in text_err:
+        problems.append(f"{name} (text): exit 2, but the message does not name {single}: {text_err.strip()[:300]}")
+    return problems
 
 
 def main(argv):
@@ -98,11 +133,12 @@ def main(argv):
         jobs += [(binary, case) for case in cases_for(table)]
     problems = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        for problem in pool.map(lambda job: run(job[0], job[1], seconds), jobs):
-            if problem:
+        for found in pool.map(lambda job: run(job[0], job[1], seconds), jobs):
+            for problem in found:
                 problems.append(problem)
                 print(problem, flush=True)
-    print(f"{len(jobs)} runs of {len(binaries)} chapters; {len(problems)} problems")
+    singles = sum(1 for _, case in jobs if len(case) == 1)
+    print(f"{len(jobs)} cases of {len(binaries)} chapters ({singles} also as text); {len(problems)} problems")
     return 1 if problems else 0
 
 

@@ -7,6 +7,7 @@
 //  - --json prints one summary object on stdout and nothing else;
 //  - a diverging simulation is a reported result (exit 0, or 3 under --fail-on-divergence).
 #include <functional>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -17,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <kit/figure.hpp>
+#include <kit/progress.hpp>
 #include <kit/real_range.hpp>
 #include <kit/report.hpp>
 #include <kit/usage.hpp>
@@ -55,7 +57,8 @@ class ChapterApp {
   int run(int argc, const char* const* argv, const std::function<void()>& body);
 
   const CommonOptions& options() const { return options_; }
-  /// Human-readable output: stdout, or nowhere under --json or --quiet.
+  /// Human-readable output: stdout, or nowhere under --json or --quiet. Each write first erases
+  /// the progress line, which the next report of work draws again below the text.
   std::ostream& text();
   /// The summary printed by --json. "chapter" and "parameters" are filled in already.
   nlohmann::json& summary() { return summary_; }
@@ -66,9 +69,11 @@ class ChapterApp {
   void figure(const Figure& figure);
 
   /// Runs one section of the lecture, `fn()`, or says which exercise it waits for
-  /// (Report::attempt): a student sees every section that their code already runs.
+  /// (Report::attempt): a student sees every section that their code already runs. While it
+  /// runs, the progress line on a terminal (progress.hpp) names it.
   template <class F>
   auto section(const std::string& title, F&& fn) {
+    const ProgressTask progress(title);
     return report_.attempt(title, std::forward<F>(fn));
   }
 
@@ -85,6 +90,8 @@ class ChapterApp {
   nlohmann::json summary_;
   std::vector<std::function<void()>> record_parameters_;
   std::ostream null_{nullptr};
+  std::unique_ptr<std::streambuf> stdout_buffer_;  // stdout that first erases the progress line
+  std::ostream stdout_{nullptr};
   Report report_{null_, summary_};  // bound to text() once the flags are parsed
   nlohmann::json flag_table_ = nlohmann::json::array();  // every numeric flag and its range
   bool flag_table_requested_ = false;

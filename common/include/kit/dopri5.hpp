@@ -21,6 +21,7 @@
 #include <kit/adaptive_run.hpp>
 #include <kit/dopri5_coefficients.hpp>
 #include <kit/pi_step_control.hpp>
+#include <kit/progress.hpp>
 #include <kit/state.hpp>
 
 namespace kit {
@@ -127,6 +128,7 @@ Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end, 
       out.message = fmt::format("more than {} steps needed; stopped at t = {:.6g}", options.max_steps, t);
       return out;
     }
+    if (((out.stats.steps + out.stats.rejected) & 4095) == 4095) progress_add(4096);  // progress.hpp
     // Below ten rounding units of t the step no longer moves t: the tolerance is out of reach.
     if (0.1 * std::abs(h) <= std::max(std::abs(t), std::abs(t_end - t0)) * uround) {
       out.status = RunStatus::step_too_small;

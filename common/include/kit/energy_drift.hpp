@@ -7,6 +7,8 @@
 #include <optional>
 #include <vector>
 
+#include <kit/progress.hpp>
+
 namespace kit {
 
 struct EnergyDrift {
@@ -38,6 +40,7 @@ EnergyDrift energy_drift(const State& u0, double dt, long steps, Step&& step, En
     out.max_drift = std::max(out.max_drift, drift);
     if (k % every == 0 || k == steps) out.t.push_back(static_cast<double>(k) * dt), out.drift.push_back(drift);
     if (k == steps) break;
+    if ((k + 1) % progress_chunk == 0) progress_add(static_cast<double>(progress_chunk));
     u = step(u);
   }
   out.final_ratio = energy(u) / e0;

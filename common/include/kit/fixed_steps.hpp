@@ -1,17 +1,28 @@
 #pragma once
 // Driving a one-step method at a constant Δt: u_{k+1} = step(u_k).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include <kit/progress.hpp>
 #include <kit/state.hpp>
 
 namespace kit {
 
 /// u_n after n applications of `step` to u0. No storage: this is what sweeps over millions
-/// of steps use.
+/// of steps use. Reports its steps to the progress line, a chunk at a time.
 template <class State, class Step>
 State advance(State u, long n, Step&& step) {
-  for (long k = 0; k < n; ++k) u = step(u);
+  for (long done = 0; done < n;) {
+    const long chunk = std::min(n - done, progress_chunk);
+    // A local state: stores to it alias nothing, so what `step` reads (Δt, g) stays in registers
+    // even when this function is not inlined (u, an argument, lives in the caller's memory).
+    State v = u;
+    for (long k = 0; k < chunk; ++k) v = step(v);
+    u = v;
+    done += chunk;
+    progress_add(static_cast<double>(chunk));
+  }
   return u;
 }
 
@@ -33,6 +44,7 @@ Trajectory<State> record(State u, double dt, long n, Step&& step,
       break;
     }
     trajectory.push(static_cast<double>(k) * dt, u);
+    if (k % progress_chunk == 0) progress_add(static_cast<double>(progress_chunk));
   }
   return trajectory;
 }

@@ -11,6 +11,7 @@
 #include <limits>
 #include <vector>
 
+#include <kit/progress.hpp>
 #include <kit/state.hpp>
 
 namespace kit {
@@ -57,6 +58,7 @@ bool grows(Step&& step, Vec2 u, const Vec2& equilibrium, long steps) {
     if (!std::isfinite(size)) return true;
     if (k < steps / 4) early = std::max(early, size);
     if (k >= steps - steps / 4) late = std::max(late, size);
+    if ((k + 1) % progress_chunk == 0) progress_add(static_cast<double>(progress_chunk));
   }
   return late > 2.0 * early;
 }

@@ -6,6 +6,9 @@
 // is raised, and the chapter says so.
 #include <vector>
 
+#include <kit/report.hpp>
+#include <kit/run_estimate.hpp>
+
 namespace kit {
 
 /// The Δt range of a sweep over [0, T]. Every run covers [0, T] in m whole steps of Δt = T/m.
@@ -31,5 +34,24 @@ struct StepSweep {
 /// dt_min is raised to t_end/max_steps when it asks for more. Needs t_end > 0,
 /// 0 < dt_min <= dt_max and max_steps >= 1 (std::invalid_argument otherwise).
 StepSweep budget_sweep(double t_end, double dt_max, double dt_min, long max_steps);
+
+/// What a step of each of the round-off sweep's kernels costs [s], from calibration runs.
+struct RoundoffCosts {
+  double explicit_double = 0;  ///< explicit Euler in double
+  double explicit_float = 0;   ///< explicit Euler in float
+  double implicit_float = 0;   ///< implicit Euler in float, matrix form (several times the others)
+};
+/// While the sweep runs, the weight of an implicit float step on the progress line, whose unit
+/// is an explicit double step: set by announce_roundoff, read by the sweep (ProgressWeight).
+inline double roundoff_implicit_weight = 1.0;
+
+/// What chapter 1's round-off sweep costs: every count of `doubles` (4 a decade) once in double,
+/// and those within `floats`' budget twice more (explicit and implicit Euler in float), each step
+/// at its kernel's cost; it keeps a few numbers per run. `work` counts explicit double steps.
+RunEstimate roundoff_estimate(const StepSweep& doubles, const StepSweep& floats, const RoundoffCosts& costs);
+/// Announces that estimate (run_estimate.hpp) under "roundoff", naming --t-end and --dt-min, and
+/// refuses a sweep that cannot fit (the step budget keeps every sweep far within the limits).
+/// Sets roundoff_implicit_weight.
+void announce_roundoff(Report& report, const StepSweep& doubles, const StepSweep& floats, const RoundoffCosts& costs);
 
 }  // namespace kit

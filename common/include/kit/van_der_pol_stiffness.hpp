@@ -12,6 +12,7 @@
 #include <kit/adaptive_rk_models.hpp>
 #include <kit/adaptive_run.hpp>
 #include <kit/report.hpp>
+#include <kit/run_estimate.hpp>
 #include <kit/state.hpp>
 
 namespace kit {
@@ -42,6 +43,14 @@ using Dopri5Runner =
 /// `dopri5` on Van der Pol with `mu` over two periods, or over as much of them as `budget` steps
 /// cover (a large μ is never refused: the run says how far it got).
 StiffnessRun van_der_pol_stiffness(double mu, const Dopri5Runner& dopri5, long budget = 2'000'000);
+
+/// What that run costs: min(predicted steps, budget) DOPRI5 steps at the cost of a step measured
+/// on a short run of the same problem, and the trajectory it keeps (about 48 B a step).
+RunEstimate van_der_pol_estimate(double mu, const Dopri5Runner& dopri5, long budget = 2'000'000);
+
+/// The same run, its estimate announced first (run_estimate.hpp) under "van_der_pol", and its
+/// steps counted on the progress line.
+StiffnessRun van_der_pol_stiffness(Report& report, double mu, const Dopri5Runner& dopri5, long budget = 2'000'000);
 
 /// Every value above as report fields (run_fields.hpp for the run), plus "boundary" = 3.31 and
 /// "verdict", the sentence that says which of stability and accuracy sets the step.

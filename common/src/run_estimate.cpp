@@ -1,0 +1,48 @@
+#include <kit/run_estimate.hpp>
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include <kit/progress.hpp>
+#include <kit/usage.hpp>
+
+namespace kit {
+
+std::string describe_bytes(double bytes) {
+  if (!(bytes >= 0) || !std::isfinite(bytes)) return "an unknown amount of memory";
+  if (bytes < 1e6) return "under 1 MB";
+  if (bytes < 1e9) return fmt::format("{:.0f} MB", bytes / 1e6);
+  if (bytes < 1e12) return fmt::format("{:.2g} GB", bytes / 1e9);
+  if (bytes < 1e15) return fmt::format("{:.2g} TB", bytes / 1e12);
+  return fmt::format("{:.2g} PB", bytes / 1e15);
+}
+
+std::string describe(const RunEstimate& e) {
+  return fmt::format("about {:.2g} steps: {} and {}", e.steps, about_seconds(e.seconds()),
+                     describe_bytes(e.bytes));
+}
+
+bool over_limits(const RunEstimate& e, const RunLimits& limits) {
+  return !(e.seconds() <= limits.max_seconds) || !(e.bytes <= limits.max_bytes);
+}
+
+void announce_run(Report& report, std::string_view section, std::string_view what, const RunEstimate& e,
+                  std::string_view flags, const RunLimits& limits) {
+  if (over_limits(e, limits))
+    throw UsageError(fmt::format("{} ({}) takes {}, over the limit of {} and {}: choose values that ask for "
+                                 "fewer steps", what, flags, describe(e), describe_seconds(limits.max_seconds),
+                                 describe_bytes(limits.max_bytes)));
+  const bool announced = e.seconds() >= limits.announce_seconds || e.bytes >= limits.announce_bytes;
+  const std::string place = std::string(section) + "/estimate";
+  const std::vector<Field> fields{{"steps", e.steps}, {"seconds", e.seconds()}, {"bytes", e.bytes},
+                                  {"announced", announced}, {"what", std::string(what)},
+                                  {"text", describe(e)}};
+  if (announced)
+    report.say(place, "\n{what} takes {text}.\n", fields);
+  else
+    report.store(place, fields);
+  ProgressTask::set_total(e.work > 0 ? e.work : e.steps);
+}
+
+}  // namespace kit
