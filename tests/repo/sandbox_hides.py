@@ -2,9 +2,12 @@
 """The grader's sandbox hides what it promises to hide, whatever the student code does with it.
 
 Runs shell commands through grading.sandbox exactly as the grader runs a graded program, with a
-grade tree of its own, and checks from inside: the kit's solutions/ and .git are empty, another
-submission and the grader's home are invisible, the kit and the file system are read-only, the
-environment holds no secret, there is no network, and only the tree is writable during a build.
+grade tree of its own, and checks from inside: only the system folders, the kit and the tree
+are there (no /home, /root, /var, /etc/passwd or /etc/shadow, nothing else next to the kit);
+the kit's solutions/ and .git are empty, another submission is invisible, the kit and the
+system are read-only, no capability is left to undo a mount, the environment holds no secret,
+there is no network, a test has nowhere to write, and only the tree (and a private /tmp) is
+writable during a build.
 
 Usage: sandbox_hides.py WORK_DIR
 """
@@ -34,6 +37,13 @@ def main(argv):
         done = subprocess.run(command, capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=60)
         return done.returncode, done.stdout.strip()
 
+    # At the top: the system's folders (and links) as this machine has them, the way to the kit and
+    # the way to the tree, nothing else. Next to the kit: nothing.
+    top = {n for n in ("bin", "sbin", "lib", "lib32", "lib64", "libx32") if os.path.lexists(f"/{n}")}
+    top |= {"usr", "etc", "dev", "proc", ROOT.parts[1], tree.parts[1]}  # no /tmp for a test
+    elsewhere = [] if ROOT.parent == pathlib.Path("/") else sorted(
+        p for p in ROOT.parent.iterdir() if p.name != ROOT.name and p not in tree.parents)[:20]
+
     checks = [
         ("solutions/ is empty", f"ls -A {ROOT / 'solutions'} | wc -l", "0"),
         ("the classmate's folder is empty", f"ls -A {classmate} | wc -l", "0"),
@@ -43,13 +53,33 @@ def main(argv):
         ("the tree is read-only for a test", f"touch {tree / 'x'} 2>/dev/null && echo written || echo refused", "refused"),
         ("no secret in the environment", "env | grep -c KIT_TEST_SECRET", "0"),
         ("no network: loopback only", "grep -c : /proc/net/dev", "1"),
-        ("a private, writable /tmp", "touch /tmp/kit-sandbox-scratch && echo written", "written"),
+        ("nowhere to write for a test", "for d in /tmp /dev /dev/shm / $HOME; do touch $d/kit-x 2>/dev/null && echo $d; "
+         "done | wc -l", "0"),
+        ("only the system, the kit and the tree at the top", "ls -A / | sort | tr '\\n' ' '",
+         " ".join(sorted(top))),
+        ("no /home, /root, /var, /run, /srv, /opt, /mnt, /media, /boot",
+         "ls -d /home /root /var /run /srv /opt /mnt /media /boot 2>/dev/null | wc -l", "0"),
+        ("no /etc/passwd, /etc/shadow, /etc/hostname", "cat /etc/passwd /etc/shadow /etc/hostname 2>/dev/null | wc -c",
+         "0"),
+        ("in /etc only the loader's files and the alternatives", "ls -A /etc | grep -cv '^ld\\.so\\.\\|^alternatives$'",
+         "0"),
+        ("nothing next to the kit", f"ls -d {' '.join(str(p) for p in elsewhere) or '/nonexistent'} 2>/dev/null | wc -l",
+         "0"),
+        ("no capability left", "grep CapEff /proc/self/status | tr -d '\\t'", "CapEff:0000000000000000"),
+        ("a hiding mount cannot be undone",
+         f"umount {ROOT / 'solutions'} 2>/dev/null; ls -A {ROOT / 'solutions'} | wc -l", "0"),
+        ("the kit cannot be remounted writable",
+         f"mount -o remount,bind,rw {ROOT} 2>/dev/null; touch {ROOT / 'pwned'} 2>/dev/null && echo written || echo refused",
+         "refused"),
+        ("a compiler and the build tools are there", "for c in c++ g++ cmake ninja python3; do command -v $c; done | wc -l", "5"),
     ]
-    if (ROOT / ".git").exists():
+    if (ROOT / ".git").is_dir():
         checks.append(("the kit's history is hidden", f"ls -A {ROOT / '.git'} 2>/dev/null | wc -l", "0"))
+    elif (ROOT / ".git").exists():  # a worktree: .git is a file naming the repository
+        checks.append(("the kit's history is hidden", f"cat {ROOT / '.git'} 2>/dev/null | wc -c", "0"))
     home = os.environ.get("HOME")
     if home and pathlib.Path(home).is_dir() and not str(ROOT).startswith(home.rstrip("/") + "/"):
-        checks.append(("the grader's home is empty", f"ls -A {home} | wc -l", "0"))
+        checks.append(("the grader's home is not there", f"ls -A {home} 2>/dev/null | wc -l", "0"))
     problems = []
     for what, script, want in checks:
         _, got = inside(script)
@@ -59,11 +89,14 @@ def main(argv):
     _, got = inside(f"touch {tree / 'built'} && echo written", writable=True)
     if got != "written" or not (tree / "built").exists():
         problems.append("the tree is not writable for a build")
+    _, got = inside("touch /tmp/kit-sandbox-scratch && echo written", writable=True)
+    if got != "written":
+        problems.append("a build has no writable /tmp")
     if pathlib.Path("/tmp/kit-sandbox-scratch").exists():
         problems.append("the sandbox's /tmp is the machine's")
     if (ROOT / "pwned").exists() or (classmate / "rk4.hpp").read_text() != "a classmate's work\n":
         problems.append("something outside the tree changed")
-    print(f"{len(checks) + 1} checks; {len(problems)} problems")
+    print(f"{len(checks) + 2} checks; {len(problems)} problems")
     return 1 if problems else 0
 
 
