@@ -10,23 +10,47 @@
     no network, no other process visible (new namespaces), no capabilities (so no mount can be
     undone, even when the grader runs as root), an empty environment (PATH, HOME=/tmp and the
     evidence descriptor only), no stdin, and the process dies with the grader;
-  - limits on address space (memory) and on the size of any file written, and the grader's
-    wall-clock timeout.
+  - limits (grading/confine.py, the last step before the command): address space, the size of
+    any file written, CPU seconds per process and no core dump; a graded test may not start a
+    process or a thread (a seccomp filter kills it on fork/clone); plus the grader's wall-clock
+    timeout.
 Without bubblewrap (or with --no-sandbox) commands run bare, with the same limits, and every
 report says so."""
+import math
 import os
 import pathlib
 import shutil
 import subprocess
+import sys
+from typing import NamedTuple
 
 BUILD_MEMORY = 4 << 30   # bytes of address space for a compiler process
 TEST_MEMORY = 2 << 30    # bytes of address space for a graded test
 OUTPUT_LIMIT = 1 << 30   # bytes a process may write to any one file (build tree, output, evidence)
+BUILD_CPU = 900          # CPU seconds for one compiler process (a heavy Eigen file takes under 60)
+
+CONFINE = pathlib.Path(__file__).resolve().parent / "confine.py"
+# The machine's own Python (the grader may run under another one, in a folder the sandbox hides).
+PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else (shutil.which("python3") or sys.executable)
 
 # What the compiler, cmake, ninja, Python and the test programs need of the machine, read-only.
 SYSTEM_DIRS = ["/usr"]
 SYSTEM_TOP_LEVEL = ["/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"]  # links into /usr, or folders
 SYSTEM_ETC = ["/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives"]
+
+
+class Limits(NamedTuple):
+    memory: int   # bytes of address space
+    cpu: int      # CPU seconds per process
+    spawn: bool   # may start processes and threads
+
+
+BUILD_LIMITS = Limits(BUILD_MEMORY, BUILD_CPU, True)
+
+
+def test_limits(timeout):
+    """A graded test: 2 GiB, as many CPU seconds as the wall-clock timeout, no new process."""
+    return Limits(TEST_MEMORY, max(1, math.ceil(timeout)), False)
 
 
 class SandboxUnavailable(Exception):
@@ -55,6 +79,7 @@ class Sandbox:
         self.enabled = enabled
         if enabled:
             self._probe()
+        self._probe_limits()
 
     def _probe(self):
         bwrap = shutil.which("bwrap")
@@ -64,6 +89,14 @@ class Sandbox:
                                 "--cap-drop", "ALL", "--die-with-parent", "true"], capture_output=True, text=True)
         if probe.returncode != 0:
             raise SandboxUnavailable(f"bwrap cannot create a sandbox here: {probe.stderr.strip()[:300]}")
+
+    def _probe_limits(self):
+        """The limits a graded test gets can be set here (the seccomp filter knows this machine)."""
+        probe = subprocess.run(self.wrap(["true"], self.kit_root, False, test_limits(10)),
+                               capture_output=True, text=True, stdin=subprocess.DEVNULL)
+        if probe.returncode != 0:
+            raise SandboxUnavailable(f"cannot limit a graded test here: {probe.stdout.strip()[:300]}"
+                                     f"{probe.stderr.strip()[:300]}")
 
     def _kit(self):
         """The kit, read-only, with its secrets hidden: solutions/, .git, and every hidden path
@@ -84,13 +117,14 @@ class Sandbox:
                 args += ["--ro-bind", "/dev/null", str(path)]  # a .git file (worktree), say
         return args
 
-    def wrap(self, command, tree, writable, memory, env=None):
-        """`command` confined to `tree` (a grade tree), with `memory` bytes of address space, and
-        `env` as the only variables it gets besides PATH, HOME, TMPDIR and LANG."""
+    def wrap(self, command, tree, writable, limits, env=None):
+        """`command` confined to `tree` (a grade tree) under `limits`, with `env` as the only
+        variables it gets besides PATH, HOME, TMPDIR and LANG."""
         extra = [word for key, value in sorted((env or {}).items()) for word in ("--setenv", key, value)]
-        limits = ["prlimit", f"--as={memory}", f"--fsize={OUTPUT_LIMIT}", "--"]
+        confine = [PYTHON, "-I", "-S", str(CONFINE), "--as", str(limits.memory), "--fsize", str(OUTPUT_LIMIT),
+                   "--cpu", str(limits.cpu), *([] if limits.spawn else ["--no-spawn"]), "--"]
         if not self.enabled:
-            return ["env", *[f"{k}={v}" for k, v in sorted((env or {}).items())]] + limits + command
+            return ["env", *[f"{k}={v}" for k, v in sorted((env or {}).items())]] + confine + command
         # A build gets a private /tmp (the compiler's scratch files); a test, no writable place at
         # all, so that it cannot fill the machine's memory with files in a tmpfs.
         bind, scratch = (["--bind"], ["--tmpfs", "/tmp"]) if writable else (["--ro-bind"], [])
@@ -99,4 +133,4 @@ class Sandbox:
                  "--setenv", "PATH", "/usr/local/bin:/usr/bin:/bin", "--setenv", "HOME", "/tmp",
                  "--setenv", "TMPDIR", "/tmp", "--setenv", "LANG", "C.UTF-8", "--setenv", "CCACHE_DISABLE", "1"]
                 + extra + self._kit() + [*bind, str(tree), str(tree), "--remount-ro", "/", "--chdir", str(tree), "--"]
-                + limits + command)
+                + confine + command)
