@@ -7,8 +7,9 @@ For each folder, in its own grade tree OUT/NAME/:
   2. configure and build the graded programs against that copy, inside the sandbox
      (grading/sandbox.py), one program per exercise, `ninja -k 0` so a file that does not compile
      costs only the exercises written in it;
-  3. run each graded program inside the sandbox, with a memory limit and a timeout, and read the
-     evidence it writes on a channel the grader opened (grading/evidence.py);
+  3. run each graded program inside the sandbox, with a memory limit, a timeout (wall clock and
+     CPU seconds) and no right to start a process, and read the evidence it writes on a channel
+     the grader opened (grading/evidence.py);
   4. write grade.json, grade.md, grade.junit.xml; then class.csv and class.md for the batch
      (grading/reports.py). Reports are written here, outside the sandbox, never by a test.
 
@@ -31,7 +32,7 @@ import tempfile
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from grading import build_log, evidence, reports, static_check, submission  # noqa: E402
-from grading.sandbox import BUILD_MEMORY, TEST_MEMORY, Sandbox, SandboxUnavailable  # noqa: E402
+from grading.sandbox import BUILD_LIMITS, Sandbox, SandboxUnavailable, test_limits  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 POINTS = ROOT / "tests" / "grading" / "points.json"
@@ -79,6 +80,11 @@ def run_with_evidence(command, evidence_path, fd_number, timeout):
             os.close(fd_number)
 
 
+def died_of(code, sig):
+    """Whether a run ended by `sig`: bare, a negative return code; under bwrap, 128 + the signal."""
+    return code in (-sig, 128 + sig)
+
+
 def verdict(exercise, binary, run, expected, errors, findings):
     """(status, message) for one exercise."""
     ident = exercise["id"]
@@ -87,8 +93,10 @@ def verdict(exercise, binary, run, expected, errors, findings):
     if not binary.exists():
         return "not run", "the test program was not built (see build.log)"
     code, output, cases, end, odd = run
-    if code is None:
+    if code is None or died_of(code, signal.SIGXCPU):  # the wall clock, or the CPU seconds, ran out
         return "timeout", "did not finish within the time limit: an endless loop?"
+    if died_of(code, signal.SIGSYS):  # the sandbox's filter: a graded test may not fork or clone
+        return "integrity", "the test process tried to start a process or a thread, which grading forbids"
     status, reason = evidence.judge(expected, cases, end, odd)
     signal_caught = re.search(r"(SIG[A-Z]+) - ([^'\n]*)", output)
     if status == "fail" and signal_caught:  # Catch turns a fatal signal into a failed check
@@ -124,7 +132,7 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout):
     if not configured:
         code, log = run_limited(sandbox.wrap(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja",
                                               "-DCMAKE_BUILD_TYPE=Release", f"-DKIT_IMPL={src}", "-DKIT_GRADING_ONLY=ON"],
-                                             tree, True, BUILD_MEMORY), 600)
+                                             tree, True, BUILD_LIMITS), 600)
         (tree / "configure.log").write_text(log, encoding="utf-8")
         configured = code == 0
     rows = []
@@ -134,7 +142,7 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout):
             if stale.is_file():
                 stale.unlink()
         _, log = run_limited(sandbox.wrap(["cmake", "--build", str(build), "-j", str(jobs), "--", "-k", "0"],
-                                          tree, True, BUILD_MEMORY), 3600)
+                                          tree, True, BUILD_LIMITS), 3600)
         (tree / "build.log").write_text(log, encoding="utf-8")
         errors = build_log.compile_errors(log, allowed)
     evidence_dir = tree / "evidence"
@@ -150,7 +158,7 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout):
                 channel = evidence_dir / f"ex{ident}.txt"
                 fd = evidence_fd_for(channel)
                 command = sandbox.wrap([str(binary), "--reporter", "compact", "--rng-seed", SEED], tree, False,
-                                       TEST_MEMORY, env={"KIT_EVIDENCE_FD": str(fd)})
+                                       test_limits(timeout), env={"KIT_EVIDENCE_FD": str(fd)})
                 code, output = run_with_evidence(command, channel, fd, timeout)
                 (evidence_dir / f"ex{ident}.out").write_text(output, encoding="utf-8")
                 run = (code, output, *evidence.read(channel))

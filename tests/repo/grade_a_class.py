@@ -7,7 +7,7 @@ The six submissions, generated from the solution markers:
   broken        midpoint.hpp does not compile
   segfaults     ex 2.2 writes through a null pointer
   loops         ex 3.2 never returns
-  adversary     solved, but five files attack the grader:
+  adversary     solved, but six files attack the grader:
     amplification.hpp   a static initialiser writes outside its tree: a marker file, the kit's
                         points.json and a new file in tests/grading/, a line appended to every
                         classmate's file, and the classmates' grade.json
@@ -15,6 +15,10 @@ The six submissions, generated from the solution markers:
     symplectic_euler.hpp  #define CHECK(...) to silence the checks, with a wrong method
     spring_system.hpp   #include of the kit's own solutions/ file, by absolute path
     implicit_euler.hpp  reads another submission's file
+    pi_controller.hpp   starts processes from a static initialiser with posix_spawn (declared by
+                        hand, so no header gives it away), as a fork bomb would: the sandbox
+                        kills the test at the first one (bounded to 64 harmless processes, so
+                        that a sandbox without the filter does not hurt the machine)
   and it ships a fake catch2/catch.hpp and kit/state.hpp that would make every check pass.
 Checks: class.csv is right; every attacked item scores 0 (integrity, compile error or fail);
 the untouched items still score; the compile error names the student's file and line;
@@ -107,10 +111,20 @@ def main(argv):
     adversary["implicit_euler.hpp"] = prepend(solved["implicit_euler.hpp"].replace("#include <cmath>", "#include <cmath>\n#include <fstream>\n#include <string>"),
         f'inline const std::string kit_peek = [] {{ std::ifstream f("{classroom / "complete" / "midpoint.hpp"}"); '
         'std::string s; std::getline(f, s); return s; }();\n')
+    adversary["pi_controller.hpp"] = prepend(solved["pi_controller.hpp"], (
+        'extern "C" int posix_spawn(int*, const char*, const void*, const void*, char* const*, char* const*);\n'
+        "inline const int kit_spawned = [] {\n"
+        '  char name[] = "true";\n'
+        "  char* argv[] = {name, nullptr};\n"
+        "  int pid = 0, n = 0;\n"
+        '  while (n < 64 && posix_spawn(&pid, "/usr/bin/true", nullptr, nullptr, argv, argv + 1) == 0) ++n;\n'
+        "  return n;\n"
+        "}();\n"))
     adversary["catch2/catch.hpp"] = "#pragma once\n#define TEST_CASE(...) void fake()\n#define CHECK(...)\n"
     adversary["kit/state.hpp"] = "#pragma once\n"
     write(classroom / "adversary", adversary)
-    tampered = {"amplification.hpp", "rk4.hpp", "symplectic_euler.hpp", "spring_system.hpp", "implicit_euler.hpp"}
+    tampered = {"amplification.hpp", "rk4.hpp", "symplectic_euler.hpp", "spring_system.hpp", "implicit_euler.hpp",
+                "pi_controller.hpp"}
 
     kit_files = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True).stdout.split()
     watched = [ROOT / f for f in kit_files if (ROOT / f).is_file()]
@@ -146,6 +160,10 @@ def main(argv):
     expect_row("loops", all_ids - {"3.2"}, {"3.2": ("timeout",)})
     attacked = {i for i in all_ids if by_file[i] in tampered}
     report = expect_row("adversary", all_ids - attacked, {i: ("integrity", "compile error", "fail") for i in attacked})
+    spawner = next(r for r in report["exercises"] if r["file"] == "pi_controller.hpp")
+    if "start a process" not in spawner["message"]:
+        problems.append(f"adversary: the spawning ex {spawner['id']} was not stopped by the sandbox: "
+                        f"{spawner['status']}: {spawner['message'][:200]}")
     ignored = {path for path, _ in report["ignored"]}
     for shadow in ("catch2/catch.hpp", "kit/state.hpp"):
         if shadow not in ignored:

@@ -1,22 +1,85 @@
 #!/usr/bin/env python3
-"""The grader's sandbox hides what it promises to hide, whatever the student code does with it.
+"""The grader's sandbox hides what it promises to hide, whatever the student code does with it,
+and its limits stop a fork bomb and an endless loop.
 
-Runs shell commands through grading.sandbox exactly as the grader runs a graded program, with a
-grade tree of its own, and checks from inside: the kit's solutions/ and .git are empty, another
-submission and the grader's home are invisible, the kit and the file system are read-only, the
-environment holds no secret, there is no network, and only the tree is writable during a build.
+Runs commands through grading.sandbox exactly as the grader does, with a grade tree of its own,
+and checks from inside: only the system folders, the kit and the tree are there (no /home,
+/root, /var, /etc/passwd or /etc/shadow, nothing else next to the kit); the kit's solutions/
+and .git are empty, another submission is invisible, the kit and the system are read-only, no
+capability is left to undo a mount, the environment holds no secret, there is no network, a
+test has nowhere to write, and only the tree (and a private /tmp) is writable during a build.
+Then, under a graded test's limits: a fork bomb in a static initialiser is killed at its first
+fork and a busy loop at its CPU seconds; a compiler still builds a program under the build's
+limits, and that program runs under a test's.
 
 Usage: sandbox_hides.py WORK_DIR
 """
 import os
 import pathlib
 import shutil
+import signal
 import subprocess
 import sys
+import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
-from grading.sandbox import TEST_MEMORY, Sandbox  # noqa: E402
+from grading.sandbox import BUILD_LIMITS, TEST_MEMORY, Limits, Sandbox, test_limits  # noqa: E402
+
+
+# A program with a bounded fork bomb in a static initialiser (bounded, so that a sandbox without
+# the limit does not hurt the machine running this test): it forks when BOMB is set.
+PROGRAM = r"""#include <unistd.h>
+#include <cstdio>
+#include <cstdlib>
+static const int forked = [] {
+  int n = 0;
+  for (; std::getenv("BOMB") && n < 200; ++n) {
+    const pid_t pid = fork();
+    if (pid == 0) { sleep(5); _exit(0); }
+    if (pid < 0) break;
+  }
+  return n;
+}();
+int main() { std::printf("forked %d\n", forked); }
+"""
+
+
+def check_limits(sandbox, tree, inside):
+    """A compiler works under the build's limits; under a graded test's, the program it built runs,
+    its fork bomb dies at the first fork, and a busy loop at its CPU seconds."""
+    problems = []
+
+    def timed(what, run, want_code, want_output, within):
+        start = time.monotonic()
+        try:
+            code, output = run()
+        except subprocess.TimeoutExpired:
+            code, output = "no end", ""
+        seconds = time.monotonic() - start
+        good = code == want_code and output == want_output and seconds < within
+        print(f"{'ok  ' if good else 'FAIL'} {what}: exit {code}, {output!r}, {seconds:.1f} s")
+        if not good:
+            problems.append(what)
+
+    def run_program(env, limits):
+        command = sandbox.wrap([str(tree / "prog")], tree, False, limits, env=env)
+        done = subprocess.run(command, capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=30)
+        return done.returncode, done.stdout.strip()
+
+    (tree / "prog.cpp").write_text(PROGRAM)
+    timed("g++ builds a program under the build's limits",
+          lambda: inside("g++ -O1 -o prog prog.cpp && echo built", writable=True, limits=BUILD_LIMITS),
+          0, "built", 120)
+    timed("the program runs under a graded test's limits", lambda: run_program({}, test_limits(10)),
+          0, "forked 0", 10)
+    # bwrap reports a child killed by a signal as 128 + the signal: SIGSYS from the filter, SIGXCPU.
+    timed("a fork bomb in a static initialiser dies at once", lambda: run_program({"BOMB": "1"}, test_limits(10)),
+          128 + signal.SIGSYS, "", 5)
+    timed("a busy loop dies at its CPU seconds",
+          lambda: inside("while :; do :; done", limits=test_limits(2), timeout=30),
+          128 + signal.SIGXCPU, "", 15)
+    return problems
 
 
 def main(argv):
@@ -29,10 +92,20 @@ def main(argv):
     os.environ["KIT_TEST_SECRET"] = "do-not-leak"
     sandbox = Sandbox(ROOT, hidden=[work / "out", classmate])
 
-    def inside(script, writable=False):
-        command = sandbox.wrap(["sh", "-c", script], tree, writable, TEST_MEMORY)
-        done = subprocess.run(command, capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=60)
+    # The hiding checks need a shell that starts processes (pipes), which a graded test may not.
+    shell_limits = Limits(TEST_MEMORY, 60, True)
+
+    def inside(script, writable=False, limits=shell_limits, timeout=60):
+        command = sandbox.wrap(["sh", "-c", script], tree, writable, limits)
+        done = subprocess.run(command, capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=timeout)
         return done.returncode, done.stdout.strip()
+
+    # At the top: the system's folders (and links) as this machine has them, the way to the kit and
+    # the way to the tree, nothing else. Next to the kit: nothing.
+    top = {n for n in ("bin", "sbin", "lib", "lib32", "lib64", "libx32") if os.path.lexists(f"/{n}")}
+    top |= {"usr", "etc", "dev", "proc", ROOT.parts[1], tree.parts[1]}  # no /tmp for a test
+    elsewhere = [] if ROOT.parent == pathlib.Path("/") else sorted(
+        p for p in ROOT.parent.iterdir() if p.name != ROOT.name and p not in tree.parents)[:20]
 
     checks = [
         ("solutions/ is empty", f"ls -A {ROOT / 'solutions'} | wc -l", "0"),
@@ -43,13 +116,33 @@ def main(argv):
         ("the tree is read-only for a test", f"touch {tree / 'x'} 2>/dev/null && echo written || echo refused", "refused"),
         ("no secret in the environment", "env | grep -c KIT_TEST_SECRET", "0"),
         ("no network: loopback only", "grep -c : /proc/net/dev", "1"),
-        ("a private, writable /tmp", "touch /tmp/kit-sandbox-scratch && echo written", "written"),
+        ("nowhere to write for a test", "for d in /tmp /dev /dev/shm / $HOME; do touch $d/kit-x 2>/dev/null && echo $d; "
+         "done | wc -l", "0"),
+        ("only the system, the kit and the tree at the top", "ls -A / | sort | tr '\\n' ' '",
+         " ".join(sorted(top))),
+        ("no /home, /root, /var, /run, /srv, /opt, /mnt, /media, /boot",
+         "ls -d /home /root /var /run /srv /opt /mnt /media /boot 2>/dev/null | wc -l", "0"),
+        ("no /etc/passwd, /etc/shadow, /etc/hostname", "cat /etc/passwd /etc/shadow /etc/hostname 2>/dev/null | wc -c",
+         "0"),
+        ("in /etc only the loader's files and the alternatives", "ls -A /etc | grep -cv '^ld\\.so\\.\\|^alternatives$'",
+         "0"),
+        ("nothing next to the kit", f"ls -d {' '.join(str(p) for p in elsewhere) or '/nonexistent'} 2>/dev/null | wc -l",
+         "0"),
+        ("no capability left", "grep CapEff /proc/self/status | tr -d '\\t'", "CapEff:0000000000000000"),
+        ("a hiding mount cannot be undone",
+         f"umount {ROOT / 'solutions'} 2>/dev/null; ls -A {ROOT / 'solutions'} | wc -l", "0"),
+        ("the kit cannot be remounted writable",
+         f"mount -o remount,bind,rw {ROOT} 2>/dev/null; touch {ROOT / 'pwned'} 2>/dev/null && echo written || echo refused",
+         "refused"),
+        ("a compiler and the build tools are there", "for c in c++ g++ cmake ninja python3; do command -v $c; done | wc -l", "5"),
     ]
-    if (ROOT / ".git").exists():
+    if (ROOT / ".git").is_dir():
         checks.append(("the kit's history is hidden", f"ls -A {ROOT / '.git'} 2>/dev/null | wc -l", "0"))
+    elif (ROOT / ".git").exists():  # a worktree: .git is a file naming the repository
+        checks.append(("the kit's history is hidden", f"cat {ROOT / '.git'} 2>/dev/null | wc -c", "0"))
     home = os.environ.get("HOME")
     if home and pathlib.Path(home).is_dir() and not str(ROOT).startswith(home.rstrip("/") + "/"):
-        checks.append(("the grader's home is empty", f"ls -A {home} | wc -l", "0"))
+        checks.append(("the grader's home is not there", f"ls -A {home} 2>/dev/null | wc -l", "0"))
     problems = []
     for what, script, want in checks:
         _, got = inside(script)
@@ -59,11 +152,15 @@ def main(argv):
     _, got = inside(f"touch {tree / 'built'} && echo written", writable=True)
     if got != "written" or not (tree / "built").exists():
         problems.append("the tree is not writable for a build")
+    _, got = inside("touch /tmp/kit-sandbox-scratch && echo written", writable=True)
+    if got != "written":
+        problems.append("a build has no writable /tmp")
     if pathlib.Path("/tmp/kit-sandbox-scratch").exists():
         problems.append("the sandbox's /tmp is the machine's")
     if (ROOT / "pwned").exists() or (classmate / "rk4.hpp").read_text() != "a classmate's work\n":
         problems.append("something outside the tree changed")
-    print(f"{len(checks) + 1} checks; {len(problems)} problems")
+    problems += check_limits(sandbox, tree, inside)
+    print(f"{len(checks) + 6} checks; {len(problems)} problems")
     return 1 if problems else 0
 
 

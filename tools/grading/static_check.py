@@ -5,12 +5,17 @@ It flags what an exercise never needs and what could change how the tests run:
   - an #include of anything but the standard library, Eigen, fmt, the kit's public headers and the
     exercise files themselves;
   - a process-control call: exit, _Exit, quick_exit, abort, terminate, system, fork, exec*,
-    popen, kill, raise, signal, longjmp, atexit, syscall, dlopen, or inline asm;
+    posix_spawn, pthread_create, popen, kill, raise, signal, longjmp, atexit, syscall, dlopen, or
+    inline asm;
   - file-system access: streams on files, std::filesystem, fopen, open, write, remove, rename…
     (no exercise reads or writes a file; the sandbox would stop the write anyway).
 Each such finding is an "integrity" finding: the exercises written in that file score 0, with
 the finding as the reason. Other preprocessor conditionals (#if, #ifdef) are listed as notes.
-Comments and string literals are blanked before the scan, so prose never trips it."""
+The scan reads the file as the compiler does: line splices (a backslash at the end of a line)
+joined first, then comments and string and character literals, raw ones included (R"x(…)x",
+u8R, LR…), blanked, so prose never trips it and neither `#def\<newline>ine` nor a call hidden
+behind a literal gets past it."""
+import bisect
 import pathlib
 import re
 
@@ -33,7 +38,7 @@ PROCESS_CONTROL = re.compile(
 # leaving the process, reaching the evidence descriptor, or the system below the library.
 FORBIDDEN_NAMES = re.compile(
     r"\b(_Exit|_exit|quick_exit|at_quick_exit|vfork|exec[lv]p?e?|execvpe|sigaction|longjmp|setjmp|"
-    r"syscall|dlopen|ptrace|getenv|secure_getenv|environ|dprintf|KIT_EVIDENCE_FD)\b")
+    r"syscall|dlopen|ptrace|getenv|secure_getenv|environ|dprintf|posix_spawnp?|pthread_create|KIT_EVIDENCE_FD)\b")
 INLINE_ASM = re.compile(r"\b(asm|__asm__|__asm)\b")
 FILE_SYSTEM = re.compile(r"\b(basic_ofstream|basic_ifstream|basic_fstream|ofstream|ifstream|fstream|filebuf|"
                          r"filesystem|FILE)\b|\b(fopen|fdopen|freopen|openat|creat|unlink|rmdir|mkdir|truncate|"
@@ -43,9 +48,45 @@ HARMLESS_DEFINE = re.compile(r"^\s*#\s*define\s+(?:[A-Z0-9_]+_HPP?_?|[A-Z0-9_]+_
 DIRECTIVE = re.compile(r"^\s*(?:#|%:)\s*(\w+)\s*(.*)$")  # %: is the digraph of #
 
 
-def blank_comments_and_strings(text):
-    """The text with comments and string/char literals replaced by spaces (newlines kept)."""
+RAW_PREFIXES = {"R", "u8R", "uR", "UR", "LR"}
+RAW_OPENING = re.compile(r'"([^ ()\\\t\v\f\n]{0,16})\(')  # "delimiter( of a raw string
+# Translation phase 2: a backslash at the end of a line joins it to the next. GCC and Clang also
+# join when spaces or tabs come between the backslash and the newline (with a warning).
+SPLICE = re.compile(r"\\[ \t\f\v]*$")
+
+
+def splice_lines(text):
+    """(joined text, starts): the text with line endings made \\n and every backslash-newline
+    removed, and starts[k] the offset in it where physical line k + 1 begins.
+
+    The standard reverts splices inside a raw string literal, which this does not: joining there
+    can only end a raw string earlier than the compiler does, so more is scanned as code, never
+    less."""
+    lines = text.replace("\r\n", "\n").replace("\r", "\n").split("\n")
+    joined, starts, size = [], [], 0
+    for number, line in enumerate(lines):
+        starts.append(size)
+        last = number == len(lines) - 1
+        splice = None if last else SPLICE.search(line)
+        piece = line[:splice.start()] if splice else line + ("" if last else "\n")
+        joined.append(piece)
+        size += len(piece)
+    return "".join(joined), starts
+
+
+def _is_identifier_char(c):
+    return c.isalnum() or c in "_$" or ord(c) > 127
+
+
+def blank(text, keep_literals=False):
+    """`text` (already spliced) with comments, and unless `keep_literals` string and character
+    literals (raw ones too, with their u8/u/U/L prefixes), replaced by spaces; newlines and length
+    kept. Numbers are read whole, so a digit separator (1'000) never opens a character literal."""
     out, i, n = [], 0, len(text)
+
+    def blanked(start, stop):
+        return re.sub(r"[^\n]", " ", text[start:stop])
+
     while i < n:
         c = text[i]
         if text.startswith("//", i):
@@ -56,22 +97,54 @@ def blank_comments_and_strings(text):
         elif text.startswith("/*", i):
             j = text.find("*/", i + 2)
             j = n if j < 0 else j + 2
-            out.append(re.sub(r"[^\n]", " ", text[i:j]))
+            out.append(blanked(i, j))
             i = j
-        elif c == "'" and i > 0 and text[i - 1].isalnum() and i + 1 < n and text[i + 1].isalnum():
-            out.append(c)  # a digit separator (1'000'000), not a character literal
-            i += 1
+        elif c.isalpha() or c in "_$" or ord(c) > 127:  # an identifier, or a literal's prefix
+            j = i + 1
+            while j < n and _is_identifier_char(text[j]):
+                j += 1
+            word = text[i:j]
+            opening = RAW_OPENING.match(text, j) if word in RAW_PREFIXES else None
+            if opening:
+                closing = ")" + opening.group(1) + '"'
+                k = text.find(closing, opening.end())
+                k = n if k < 0 else k + len(closing)
+                out.append(text[i:k] if keep_literals else word + '"' + blanked(j + 1, k - 1) + '"')
+                i = k
+            else:  # a prefix (u8"…", L'…') is followed by its literal, read on the next turn
+                out.append(word)
+                i = j
+        elif c.isdigit() or (c == "." and i + 1 < n and text[i + 1].isdigit()):  # a pp-number
+            j = i + 1
+            while j < n:
+                if text[j] in "eEpP" and j + 1 < n and text[j + 1] in "+-":
+                    j += 2
+                elif _is_identifier_char(text[j]) or text[j] == ".":
+                    j += 1
+                elif text[j] == "'" and j + 1 < n and _is_identifier_char(text[j + 1]):
+                    j += 2  # a digit separator
+                else:
+                    break
+            out.append(text[i:j])
+            i = j
         elif c in "\"'":
             j = i + 1
             while j < n and text[j] != c and text[j] != "\n":
                 j += 2 if text[j] == "\\" else 1
-            j = min(j + 1, n)
-            out.append(c + " " * max(0, j - i - 2) + (c if j - i >= 2 else ""))
-            i = j
+            j = min(j, n)
+            closed = j < n and text[j] == c
+            stop = j + 1 if closed else j  # unterminated: the rest of the line, as the compiler does
+            out.append(text[i:stop] if keep_literals else c + " " * (stop - i - 1 - closed) + (c if closed else ""))
+            i = stop
         else:
             out.append(c)
             i += 1
     return "".join(out)
+
+
+def blank_comments_and_strings(text):
+    """The text with line splices joined, and comments and string/char literals replaced by spaces."""
+    return blank(splice_lines(text)[0])
 
 
 def kit_public_headers(kit_root):
@@ -85,43 +158,50 @@ def allowed_include(target, angle, kit_headers, exercise_files):
 
 
 def check(text, name, kit_headers, exercise_files):
-    """Findings for one file: dicts {file, line, severity: integrity|note, what}."""
+    """Findings for one file: dicts {file, line, severity: integrity|note, what}.
+
+    Phase 2 first (line splices joined), then comments and literals blanked, then the checks, line
+    by line; a finding names the physical line where its match begins."""
     findings = []
-    raw_lines = text.splitlines()
-    code_lines = blank_comments_and_strings(text).splitlines()
-    for number, (raw, code) in enumerate(zip(raw_lines, code_lines), start=1):
+    joined, starts = splice_lines(text)
+    code_text, bare_text = blank(joined), blank(joined, keep_literals=True)
+    offset = 0
+    for code, bare in zip(code_text.split("\n"), bare_text.split("\n")):
+        line_start, offset = offset, offset + len(code) + 1
+
+        def line_of(column):
+            return bisect.bisect_right(starts, line_start + column)
+
+        def found(severity, what, column=0):
+            findings.append({"file": name, "line": line_of(column), "severity": severity, "what": what})
+
+        shown = " ".join(bare.split())[:80]
         directive = DIRECTIVE.match(code)
         if directive:
             word = directive.group(1)
-            if word == "define" and HARMLESS_DEFINE.match(raw):
-                findings.append({"file": name, "line": number, "severity": "note", "what": f"#define ({raw.strip()[:80]})"})
+            if word == "define" and HARMLESS_DEFINE.match(bare):
+                found("note", f"#define ({shown})")
             elif word in ("define", "undef"):
-                findings.append({"file": name, "line": number, "severity": "integrity",
-                                 "what": f"preprocessor #{word} ({raw.strip()[:80]})"})
+                found("integrity", f"preprocessor #{word} ({shown})")
             elif word == "include":
-                target = re.match(r'\s*(?:#|%:)\s*include\s*([<"])([^>"]+)[>"]', raw)
+                target = re.match(r'\s*(?:#|%:)\s*include\s*([<"])([^>"]+)[>"]', bare)
                 if not target or not allowed_include(target.group(2), target.group(1) == "<", kit_headers,
                                                      exercise_files):
-                    findings.append({"file": name, "line": number, "severity": "integrity",
-                                     "what": f"#include outside the standard library, Eigen and the kit ({raw.strip()[:80]})"})
+                    found("integrity", f"#include outside the standard library, Eigen and the kit ({shown})")
             elif word == "pragma":
                 continue
             elif word in ("if", "ifdef", "ifndef", "elif", "else", "endif"):
-                findings.append({"file": name, "line": number, "severity": "note",
-                                 "what": f"preprocessor #{word}"})
+                found("note", f"preprocessor #{word}")
             else:  # include_next, import, line, error… : nothing an exercise needs
-                findings.append({"file": name, "line": number, "severity": "integrity",
-                                 "what": f"preprocessor #{word}"})
+                found("integrity", f"preprocessor #{word}")
             continue
         for match in PROCESS_CONTROL.finditer(code):
-            findings.append({"file": name, "line": number, "severity": "integrity",
-                             "what": f"process-control call {match.group(1) or match.group(2)}()"})
+            found("integrity", f"process-control call {match.group(1) or match.group(2)}()", match.start())
         for match in FORBIDDEN_NAMES.finditer(code):
-            findings.append({"file": name, "line": number, "severity": "integrity",
-                             "what": f"use of {match.group(1)}"})
-        if INLINE_ASM.search(code):
-            findings.append({"file": name, "line": number, "severity": "integrity", "what": "inline assembly"})
+            found("integrity", f"use of {match.group(1)}", match.start())
+        asm = INLINE_ASM.search(code)
+        if asm:
+            found("integrity", "inline assembly", asm.start())
         for match in FILE_SYSTEM.finditer(code):
-            findings.append({"file": name, "line": number, "severity": "integrity",
-                             "what": f"file-system access {match.group(1) or match.group(2)}"})
+            found("integrity", f"file-system access {match.group(1) or match.group(2)}", match.start())
     return findings
