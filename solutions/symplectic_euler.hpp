@@ -13,7 +13,7 @@ namespace kit {
 template <class Accel, int N, class Scalar>
 Vec<N, Scalar> symplectic_euler_step(const Accel& accel, Scalar t, const Vec<N, Scalar>& u, Scalar dt) {
   static_assert(N % 2 == 0, "u = (x, v) needs as many velocities as positions");
-  constexpr int D = N / 2;
+  [[maybe_unused]] constexpr int D = N / 2;  // positions (and as many velocities); unused in the stub
   Vec<N, Scalar> next;
   // BEGIN SOLUTION ex 2.3: update the velocities first, then move the positions with the NEW velocities
   next.template tail<D>() = u.template tail<D>() + dt * accel(t, u.template head<D>(), u.template tail<D>());
