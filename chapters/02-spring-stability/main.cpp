@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
   return app.run(argc, argv, [&] {
     the_system(app.report(), s);  // it names what waits for an exercise; the rest runs what is written
     const auto runs = every_scheme(app, s);
-    if (s.written.factors) critical_steps(app.report(), s);
+    if (s.written.factors) app.section("critical steps", [&] { critical_steps(app.report(), s); });
     if (s.written.has(Scheme::implicit_euler)) implicit_damping(app.report(), s);
     stiff_springs(app.report(), s);
     figures(app, s, runs);

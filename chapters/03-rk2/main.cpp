@@ -37,19 +37,19 @@ void free_fall_is_exact(kit::Report& report, long steps) {
     const auto error = [&] { return std::abs(kit::advance(fall.initial_state(), steps, step)[0] - exact); };
     return kit::optional_value(report.attempt(method, [&] { return error() / std::abs(exact); }));
   };
-  const auto midpoint = off_by("midpoint RK2", [&](auto& u) { return midpoint_step(fall, 0., u, dt); });
-  const auto euler = off_by("explicit Euler", [&](auto& u) { return explicit_euler_step(fall, 0., u, dt); });
+  const auto midpoint = off_by("free-fall midpoint", [&](auto& u) { return midpoint_step(fall, 0., u, dt); });
+  const auto euler = off_by("free-fall Euler", [&](auto& u) { return explicit_euler_step(fall, 0., u, dt); });
   report.say("free_fall", "Free fall over 1 s in {steps} steps: midpoint RK2 is off by "
              "{midpoint_relative_error:.2e} (relative), explicit Euler by {euler_relative_error:.2e}.\n"
              "Midpoint RK2 integrates x'' = g exactly: what remains is round-off.\n\n",
              {{"steps", steps}, {"midpoint_relative_error", midpoint}, {"euler_relative_error", euler}});
 }
 
-// 2. Orders on the spring at a fixed time T: least squares over the asymptotic range
-//    (ω·Δt ≤ min(0.05, (ω·T)^(-1/p))) and above round-off (error ≥ 1e-10 m). A T too long
-//    for the sweep is shortened, and the text and JSON say so.
+// 2. Orders on the spring at T: least squares over ω·Δt ≤ min(0.05, (ω·T)^(-1/p)), above round-off
+//    (error ≥ 1e-10 m). A T too long for the sweep is shortened, and the text and JSON say so.
 Sweeps orders_on_the_spring(kit::ChapterApp& app, const kit::Spring& spring, const Vec2& u0, double t_end,
                             const kit::SweepHorizon& horizon, const std::vector<Scheme>& schemes) {
+  const kit::ProgressTask progress("orders");  // the progress line on a terminal
   const double w = spring.omega();
   app.report().say("spring", "Spring: m = {mass} kg, K = {stiffness} N/m, mu = {damping} N·s/m, "
                    "omega = {omega:.4g} rad/s; errors |x_N - x(T)| at T = {t:.4g} s\n",
@@ -80,6 +80,7 @@ Sweeps orders_on_the_spring(kit::ChapterApp& app, const kit::Spring& spring, con
 // 3. Energy over many periods: symplectic Euler's error oscillates but stays bounded.
 Drifts energy_over_periods(kit::ChapterApp& app, const kit::Spring& spring, const Vec2& u0, long periods,
                            const std::vector<Scheme>& schemes) {
+  const kit::ProgressTask progress("energy");
   const long steps = long(std::ceil(double(periods) * 2 * M_PI / 0.1));
   const double dt = 0.1 / spring.omega();
   app.report().say("energy_run", "\nEnergy over {periods} periods with omega·dt = {omega_dt} "
@@ -131,8 +132,7 @@ int main(int argc, char** argv) {
   Vec2 u0(1.5, 0.0);
   double t_end = 2.0;
   long free_fall_steps = 10'000, periods = 1000;
-  kit::ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR,
-                      "Chapter 3: the midpoint Runge-Kutta method and what order buys");
+  kit::ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR, "Chapter 3: midpoint RK2, what order buys");
   kit::add_spring_flags(app, spring, u0, 1e9);
   app.add_real("--t-end", t_end, "time T at which errors are measured [s]", kit::positive(1e4));
   app.add_count("--free-fall-steps", free_fall_steps, "midpoint steps on free fall", 1, 10'000'000);

@@ -12,6 +12,7 @@
 #include <kit/butcher_tableau.hpp>
 #include <kit/embedded_run.hpp>
 #include <kit/look.hpp>
+#include <kit/progress.hpp>
 #include <kit/van_der_pol_stiffness.hpp>
 #include <kit/report.hpp>
 #include <kit/work_precision.hpp>
@@ -190,6 +191,7 @@ template <int N, class Rhs>
 std::vector<WorkMethod<N>> all_work_methods(Report& report, const Rhs& f, double t0, const Vec<N>& y0, double t1,
                                             double h0) {
   std::vector<WorkMethod<N>> written;
+  const ProgressWeight uncounted(0);  // the probes are not the diagram's work (progress.hpp)
   for (auto& method : every_work_method(f, t0, y0, t1, h0))
     if (report.attempt(method.label, [&] { method.run(method.tolerances.front()); }))
       written.push_back(std::move(method));

@@ -1,5 +1,6 @@
 #include <kit/chapter_app.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <filesystem>
@@ -116,6 +117,16 @@ std::ostream& ChapterApp::text() {
 
 void ChapterApp::figure(const Figure& fig) {
   if (options_.no_plot) return;
+  // A figure with no data at all (every method it draws waits for its exercise) is not drawn:
+  // the text says so, and the summary lists it under "figures_waiting".
+  const auto has_data = [](const Panel& panel) {
+    return std::any_of(panel.series.begin(), panel.series.end(), [](const Series& s) { return !s.x.empty(); });
+  };
+  if (std::none_of(fig.panels.begin(), fig.panels.end(), has_data)) {
+    report_.print(fmt::format("[skipped] figure {}: nothing to draw until its methods are written\n", fig.name));
+    summary_["figures_waiting"].push_back(fig.name);
+    return;
+  }
   FigureOptions figure_options;
   figure_options.dir = options_.out_dir;
   figure_options.formats = options_.formats;
@@ -162,7 +173,7 @@ int ChapterApp::run(int argc, const char* const* argv, const std::function<void(
   }
   if (options_.json) {
     std::cout << summary_.dump(2) << "\n";
-  } else if (!options_.quiet && !options_.no_plot) {
+  } else if (!options_.quiet && !options_.no_plot && summary_.contains("figures")) {
     std::cout << "\nFigures (data, gnuplot script, renders) are in " << options_.out_dir << "\n";
   }
   const bool any_divergence = summary_.contains("divergences");

@@ -104,7 +104,9 @@ void ReportTable::append(std::string_view name, std::vector<ReportValue> values,
   slot({std::string(name)}).push_back(std::move(object));
 }
 
-void ReportTable::print() const { table_.print(*text_); }
+void ReportTable::print() const {
+  if (!table_.empty()) table_.print(*text_);  // no rows (every method waits for its exercise): no header
+}
 
 nlohmann::json& Report::json(std::string_view section) {
   if (section.empty()) return *summary_;

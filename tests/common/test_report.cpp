@@ -88,3 +88,24 @@ TEST_CASE("named rows nest only when asked, and append builds an array per name"
   REQUIRE(summary["orders"]["list"].size() == 2);
   CHECK(summary["orders"]["list"][1]["fitted"].get<double>() == 2.0);
 }
+
+TEST_CASE("attempt runs a part, or names the exercise it waits for and goes on; an empty table prints nothing") {
+  std::ostringstream text;
+  nlohmann::json summary;
+  kit::Report report(text, summary);
+  const auto done = report.attempt("written part", [] { return 42; });
+  REQUIRE(done);
+  CHECK(*done == 42);
+  const auto waiting = report.attempt("waiting part", []() -> int { throw kit::NotImplemented("ex 9.9", "x.hpp"); });
+  CHECK_FALSE(waiting);
+  CHECK(report.attempt("void part", [] {}));
+  CHECK(text.str() == "[skipped] waiting part: ex 9.9 is not implemented yet: edit x.hpp (look for TODO(ex 9.9))\n");
+  REQUIRE(summary["skipped"].size() == 1);
+  CHECK(summary["skipped"][0]["section"] == "waiting part");
+  // Another exception is not a waiting exercise: it propagates.
+  CHECK_THROWS_AS(report.attempt("broken part", []() -> int { throw std::runtime_error("bug"); }), std::runtime_error);
+  text.str("");
+  auto table = report.table("rows", {{"k", "k"}});
+  table.print();
+  CHECK(text.str().empty());
+}

@@ -61,8 +61,8 @@ nlohmann::json to_json(const ReportValue& value);
 
 class Report;
 
-/// A table being filled: print() shows it (unless the report is silent); every row is in the
-/// JSON already.
+/// A table being filled: print() shows it (unless the report is silent, or it has no printed
+/// row); every row is in the JSON already.
 class ReportTable {
  public:
   /// One row, a value per column, in the columns' order. `printed` = false keeps the row out of

@@ -35,7 +35,8 @@ struct StepSweep {
 /// 0 < dt_min <= dt_max and max_steps >= 1 (std::invalid_argument otherwise).
 StepSweep budget_sweep(double t_end, double dt_max, double dt_min, long max_steps);
 
-/// What a step of each of the round-off sweep's kernels costs [s], from calibration runs.
+/// What a step of each of the round-off sweep's kernels costs [s], from calibration runs; 0 for
+/// a kernel that does not run (a student's exercise not written yet).
 struct RoundoffCosts {
   double explicit_double = 0;  ///< explicit Euler in double
   double explicit_float = 0;   ///< explicit Euler in float

@@ -12,6 +12,7 @@ class Table {
   explicit Table(std::vector<std::string> headers);
   void add_row(std::vector<std::string> cells);
   void print(std::ostream& out) const;
+  bool empty() const { return rows_.empty(); }
 
  private:
   std::vector<std::string> headers_;
