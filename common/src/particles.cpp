@@ -5,6 +5,7 @@ namespace kit {
 void Particles::reserve(std::size_t n) {
   for (auto* a : {&x, &y, &z, &vx, &vy, &vz, &age, &lifetime, &size_m, &r, &g, &b, &alpha}) a->resize(n);
   emitter.resize(n);
+  id.resize(n);
   if (count_ > n) count_ = n;
 }
 
@@ -16,6 +17,7 @@ bool Particles::add(const ParticleSpawn& s) {
   age[i] = 0, lifetime[i] = s.lifetime, size_m[i] = s.size;
   r[i] = s.r, g[i] = s.g, b[i] = s.b, alpha[i] = s.alpha;
   emitter[i] = s.emitter;
+  id[i] = s.id;
   return true;
 }
 
@@ -24,6 +26,7 @@ void Particles::swap_remove(std::size_t i) {
   if (i == last) return;
   for (auto* a : {&x, &y, &z, &vx, &vy, &vz, &age, &lifetime, &size_m, &r, &g, &b, &alpha}) (*a)[i] = (*a)[last];
   emitter[i] = emitter[last];
+  id[i] = id[last];
 }
 
 }  // namespace kit

@@ -19,6 +19,7 @@ struct ParticleSpawn {
   float r = 1, g = 1, b = 1;     ///< colour, linear, each in [0, 1]
   float alpha = 1;               ///< opacity in [0, 1]
   std::uint8_t emitter = 0;      ///< index of the emitter that made it (its rates, texture, blend)
+  std::uint32_t id = 0;          ///< serial number of emission, to follow one particle's path
 };
 
 /// Struct-of-arrays storage for up to capacity() particles.
@@ -36,7 +37,7 @@ class Particles {
   /// Removes every particle.
   void clear() { count_ = 0; }
   /// Bytes per particle over all arrays.
-  static constexpr std::size_t bytes_per_particle = 14 * sizeof(float) + sizeof(std::uint8_t);
+  static constexpr std::size_t bytes_per_particle = 13 * sizeof(float) + sizeof(std::uint8_t) + sizeof(std::uint32_t);
 
   // The arrays, each of length capacity(); entries at and past size() are unspecified.
   std::vector<float> x, y, z;      ///< position [m]
@@ -47,6 +48,7 @@ class Particles {
   std::vector<float> r, g, b;      ///< colour, linear in [0, 1]
   std::vector<float> alpha;        ///< opacity in [0, 1]
   std::vector<std::uint8_t> emitter;  ///< which emitter made it
+  std::vector<std::uint32_t> id;      ///< serial number of emission (never read by the update)
 
  private:
   std::size_t count_ = 0;

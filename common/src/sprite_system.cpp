@@ -1,0 +1,57 @@
+#include <kit/sprite_system.hpp>
+
+#include <kit/emitter.hpp>
+
+namespace kit {
+
+SpriteSystem::SpriteSystem(const SpriteScene& scene, long max_particles, double fps, std::uint64_t seed,
+                           Integrator integrator)
+    : scene_(scene), dt_(1.0 / fps), random_(seed), update_(scene, integrator) {
+  particles_.reserve(std::size_t(max_particles));
+  deaths_.reserve(1024);
+}
+
+long SpriteSystem::emit(std::size_t index, long count, const Death* parent) {
+  const Emitter& e = scene_.emitters[index];
+  long added = 0;
+  for (long k = 0; k < count; ++k) {
+    ParticleSpawn p = sample_particle(e, std::uint8_t(index), random_);
+    if (parent) {  // a burst starts where its parent died, with part of its velocity
+      const float keep = float(e.inherit_velocity);
+      p.x += parent->x - float(e.position[0]), p.y += parent->y - float(e.position[1]);
+      p.z += parent->z - float(e.position[2]);
+      p.vx += keep * parent->vx, p.vy += keep * parent->vy, p.vz += keep * parent->vz;
+    }
+    p.id = next_id_;
+    if (!particles_.add(p)) {
+      dropped_this_frame_ += count - k;
+      break;
+    }
+    ++next_id_, ++added;
+  }
+  return added;
+}
+
+FrameCounts SpriteSystem::step() {
+  FrameCounts c;
+  c.frame = frame_;
+  dropped_this_frame_ = 0;
+  for (std::size_t i = 0; i < scene_.emitters.size(); ++i) {
+    const Emitter& e = scene_.emitters[i];
+    if (e.burst_only || frame_ < e.first_frame || (e.last_frame && frame_ > *e.last_frame)) continue;
+    c.emitted += emit(i, emission_count(e.rate, random_), nullptr);
+  }
+  deaths_.clear();
+  c.died = update_.step(particles_, dt_, deaths_);
+  for (const Death& d : deaths_) {
+    const int target = *scene_.emitters[d.emitter].on_death;
+    c.emitted += emit(std::size_t(target), emission_count(scene_.emitters[std::size_t(target)].rate, random_), &d);
+  }
+  c.dropped = dropped_this_frame_;
+  totals_.emitted += c.emitted, totals_.dead += c.died, totals_.dropped += c.dropped;
+  c.alive = long(particles_.size());
+  ++frame_;
+  return c;
+}
+
+}  // namespace kit
