@@ -19,7 +19,6 @@ std::pair<Vec3d, Vec3d> basis_around(const Vec3d& axis) {
   const Vec3d u = normalised(cross(axis, helper));
   return {u, cross(axis, u)};
 }
-float unit_clamped(double v) { return float(std::clamp(v, 0.0, 1.0)); }
 }  // namespace
 
 long emission_count(const Spread& rate, SpriteRandom& random) {
@@ -40,42 +39,18 @@ Vec3d direction_in_cap(const Vec3d& axis, double angle_deg, SpriteRandom& random
   return d;
 }
 
-ParticleSpawn sample_particle(const Emitter& e, std::uint8_t index, SpriteRandom& random) {
-  Vec3d offset{0, 0, 0}, direction = e.axis;
-  switch (e.shape) {
-    case EmitterShape::point:
-      direction = direction_in_cap(e.axis, 180.0, random);
-      break;
-    case EmitterShape::disc: {  // r = R·√rand: uniform over the disc's area
-      const auto [u, w] = basis_around(e.axis);
-      const double r = e.radius * std::sqrt(random.unit()), phi = 2.0 * std::numbers::pi * random.unit();
-      for (int i = 0; i < 3; ++i) offset[i] = r * (std::cos(phi) * u[i] + std::sin(phi) * w[i]);
-      direction = direction_in_cap(e.axis, e.angle_deg, random);
-      break;
-    }
-    case EmitterShape::sphere: {  // r = R·∛rand along a uniform direction: uniform in the ball
-      direction = direction_in_cap(e.axis, 180.0, random);
-      const double r = e.radius * std::cbrt(random.unit());
-      for (int i = 0; i < 3; ++i) offset[i] = r * direction[i];
-      break;
-    }
-    case EmitterShape::cone:
-      direction = direction_in_cap(e.axis, e.angle_deg, random);
-      break;
-  }
-  const double speed = draw(e.speed, random);
-  ParticleSpawn p;
-  p.x = float(e.position[0] + offset[0]), p.y = float(e.position[1] + offset[1]);
-  p.z = float(e.position[2] + offset[2]);
-  p.vx = float(speed * direction[0]), p.vy = float(speed * direction[1]), p.vz = float(speed * direction[2]);
-  p.lifetime = float(draw(e.lifetime, random));
-  p.size = float(std::max(draw(e.size, random), 0.0));
-  p.r = unit_clamped(e.colour[0] + random.symmetric() * e.colour_variance[0]);
-  p.g = unit_clamped(e.colour[1] + random.symmetric() * e.colour_variance[1]);
-  p.b = unit_clamped(e.colour[2] + random.symmetric() * e.colour_variance[2]);
-  p.alpha = unit_clamped(draw(e.alpha, random));
-  p.emitter = index;
+Vec3d offset_in_disc(const Vec3d& axis, double radius, SpriteRandom& random) {
+  const auto [u, w] = basis_around(axis);
+  const double r = radius * std::sqrt(random.unit()), phi = 2.0 * std::numbers::pi * random.unit();
+  Vec3d p;
+  for (int i = 0; i < 3; ++i) p[i] = r * (std::cos(phi) * u[i] + std::sin(phi) * w[i]);
   return p;
+}
+
+BallPoint point_in_ball(double radius, SpriteRandom& random) {
+  const Vec3d d = direction_in_cap({0, 1, 0}, 180.0, random);
+  const double r = radius * std::cbrt(random.unit());
+  return {{r * d[0], r * d[1], r * d[2]}, d};
 }
 
 }  // namespace kit

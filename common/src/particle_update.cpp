@@ -103,9 +103,6 @@ void ParticleUpdate::move(Particles& ps, double h) {
     else if (has_gravity_ && gravity_[axis] != 0) move_axis<Motion::accelerate>(x[axis], v[axis], n, a);
     else move_axis<Motion::drift>(x[axis], v[axis], n, a);
   }
-  float* __restrict age = ps.age.data();
-  const float dt = float(h);
-  for (std::size_t i = 0; i < n; ++i) age[i] += dt;
   work_.particle_steps += long(n);
   if (has_gravity_) work_.gravity += long(n);
   if (has_drag_) work_.drag += long(n);
@@ -134,37 +131,15 @@ void ParticleUpdate::change_attributes(Particles& ps, double h) {
   }
 }
 
-long ParticleUpdate::kill(Particles& ps, std::vector<Death>& bursts) {
-  const std::size_t n = ps.size();
-  if (death_.alpha_below) work_.alpha_checks += long(n);
-  if (death_.region) work_.region_checks += long(n);
-  const float alpha_min = death_.alpha_below ? float(*death_.alpha_below) : 0.f;
-  const auto outside = [&](std::size_t i) {
-    const auto& [lo, hi] = *death_.region;
-    return ps.x[i] < lo[0] || ps.x[i] > hi[0] || ps.y[i] < lo[1] || ps.y[i] > hi[1] || ps.z[i] < lo[2] ||
-           ps.z[i] > hi[2];
-  };
-  long dead = 0;
-  for (std::size_t i = 0; i < ps.size();) {
-    const bool dies = ps.age[i] >= ps.lifetime[i] || (death_.alpha_below && ps.alpha[i] < alpha_min) ||
-                      (death_.region && outside(i));
-    if (!dies) {
-      ++i;
-      continue;
-    }
-    if (bursts_on_death_[ps.emitter[i]])
-      bursts.push_back({ps.x[i], ps.y[i], ps.z[i], ps.vx[i], ps.vy[i], ps.vz[i], ps.emitter[i]});
-    ps.swap_remove(i);  // the last particle moves into slot i, which is tested next
-    ++dead;
-  }
-  work_.deaths += dead;
-  return dead;
+void ParticleUpdate::count_deaths(long alive, long died) {
+  if (death_.alpha_below) work_.alpha_checks += alive;
+  if (death_.region) work_.region_checks += alive;
+  work_.deaths += died;
 }
 
-long ParticleUpdate::step(Particles& particles, double h, std::vector<Death>& bursts) {
+void ParticleUpdate::step(Particles& particles, double h) {
   move(particles, h);
   change_attributes(particles, h);
-  return kill(particles, bursts);
 }
 
 }  // namespace kit

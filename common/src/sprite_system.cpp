@@ -5,8 +5,8 @@
 namespace kit {
 
 SpriteSystem::SpriteSystem(const SpriteScene& scene, long max_particles, double fps, std::uint64_t seed,
-                           Integrator integrator)
-    : scene_(scene), dt_(1.0 / fps), random_(seed), update_(scene, integrator) {
+                           Integrator integrator, SpriteKernels kernels)
+    : scene_(scene), kernels_(kernels), dt_(1.0 / fps), random_(seed), update_(scene, integrator) {
   particles_.reserve(std::size_t(max_particles));
   deaths_.reserve(1024);
 }
@@ -15,7 +15,7 @@ long SpriteSystem::emit(std::size_t index, long count, const Death* parent) {
   const Emitter& e = scene_.emitters[index];
   long added = 0;
   for (long k = 0; k < count; ++k) {
-    ParticleSpawn p = sample_particle(e, std::uint8_t(index), random_);
+    ParticleSpawn p = kernels_.sample(e, std::uint8_t(index), random_);
     if (parent) {  // a burst starts where its parent died, with part of its velocity
       const float keep = float(e.inherit_velocity);
       p.x += parent->x - float(e.position[0]), p.y += parent->y - float(e.position[1]);
@@ -42,7 +42,10 @@ FrameCounts SpriteSystem::step() {
     c.emitted += emit(i, emission_count(e.rate, random_), nullptr);
   }
   deaths_.clear();
-  c.died = update_.step(particles_, dt_, deaths_);
+  update_.step(particles_, dt_);
+  const long alive = long(particles_.size());
+  c.died = kernels_.age_and_kill(particles_, float(dt_), update_.death_rules(), update_.bursts_on_death(), deaths_);
+  update_.count_deaths(alive, c.died);
   for (const Death& d : deaths_) {
     const int target = *scene_.emitters[d.emitter].on_death;
     c.emitted += emit(std::size_t(target), emission_count(scene_.emitters[std::size_t(target)].rate, random_), &d);

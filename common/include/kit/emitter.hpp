@@ -1,9 +1,9 @@
 #pragma once
-// Emission (Reeves 1983, §2.1–2.2): how many particles an emitter makes this frame, and the
-// attributes of each, every one drawn as mean + rand·variance with rand uniform in [−1, 1].
+// Emission (Reeves 1983, §2.1): how many particles an emitter makes this frame, and the
+// directions its shape allows. Drawing each particle's attributes is ex 5.1
+// (solutions/sprite_emit.hpp), which uses these.
 #include <cstdint>
 
-#include <kit/particles.hpp>
 #include <kit/sprite_random.hpp>
 #include <kit/sprite_scene.hpp>
 
@@ -21,8 +21,17 @@ inline double draw(const Spread& s, SpriteRandom& random) { return s.mean + rand
 /// (180° is the whole sphere): cos θ uniform in [cos angle, 1], φ uniform in [0, 2π).
 Vec3d direction_in_cap(const Vec3d& axis, double angle_deg, SpriteRandom& random);
 
-/// One new particle of `emitter` (its index `index`), placed and aimed by its shape, every
-/// attribute drawn from its Spread; colour and alpha are clamped to [0, 1], size to ≥ 0.
-ParticleSpawn sample_particle(const Emitter& emitter, std::uint8_t index, SpriteRandom& random);
+/// A point uniform on the disc of `radius` [m] centred at the origin, normal to the unit `axis`:
+/// r = R·√rand, so that equal areas are equally likely.
+Vec3d offset_in_disc(const Vec3d& axis, double radius, SpriteRandom& random);
+
+/// A point uniform in the ball of `radius` [m] centred at the origin, with its unit direction
+/// from the centre (r = R·∛rand along a uniform direction). For the sphere shape, the direction
+/// is also the particle's direction of flight.
+struct BallPoint {
+  Vec3d offset;     ///< [m]
+  Vec3d direction;  ///< unit
+};
+BallPoint point_in_ball(double radius, SpriteRandom& random);
 
 }  // namespace kit

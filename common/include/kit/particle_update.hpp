@@ -1,8 +1,9 @@
 #pragma once
-// The update of a sprite scene, one frame of Δt (lecture, "Sprites": a particle falls under
-// gravity and lives for a limited time): move, age, change colour, opacity and size at their
-// rates, and kill (Reeves 1983, §2.3–2.4). Only what the scene lists is computed: a scene
-// without drag runs a loop with no drag term, and UpdateWork counts what each step did.
+// The motion of a sprite scene over one frame of Δt (lecture, "Sprites": a particle falls under
+// gravity), and the change of colour, opacity and size at their rates (Reeves 1983, §2.3). The
+// ageing and the deaths are ex 5.2 (solutions/sprite_age_kill.hpp), which SpriteSystem runs
+// after these. Only what the scene lists is computed: a scene without drag runs a loop with no
+// drag term, and UpdateWork counts what each step did.
 //
 // The force a = g − k (v − w) is linear in v, so one step of any of the four integrators is the
 // same affine map per axis, x' = x + p·v + q, v' = r·v + s, with coefficients that depend only on
@@ -51,7 +52,7 @@ struct Death {
 /// What the updates did so far, in particle-steps: each counter grows by the number of particles
 /// a step applied that term to. A term the scene does not list stays at 0.
 struct UpdateWork {
-  long particle_steps = 0;  ///< every particle, every step (motion and ageing)
+  long particle_steps = 0;  ///< every particle, every step (motion)
   long gravity = 0;
   long drag = 0;            ///< drag, and wind through it
   long colour = 0, alpha = 0, size = 0;  ///< rates of change over life
@@ -62,12 +63,15 @@ struct UpdateWork {
 class ParticleUpdate {
  public:
   ParticleUpdate(const SpriteScene& scene, Integrator integrator);
-  /// Advances every alive particle by h [s], ages it, applies the rates of its emitter and
-  /// removes the dead (swap-remove). Deaths of particles whose emitter has on_death are
-  /// appended to `bursts`. Returns the number of particles that died.
-  long step(Particles& particles, double h, std::vector<Death>& bursts);
+  /// Moves every alive particle by h [s] and applies the rates of change of its emitter.
+  void step(Particles& particles, double h);
+  /// Counts the death tests that ex 5.2's pass made over `alive` particles, and its `died`.
+  void count_deaths(long alive, long died);
   const UpdateWork& work() const { return work_; }
   Integrator integrator() const { return integrator_; }
+  const DeathRules& death_rules() const { return death_; }
+  /// Per emitter: whether its deaths burst (on_death), so the death pass records them.
+  const std::vector<bool>& bursts_on_death() const { return bursts_on_death_; }
 
  private:
   struct Rates {
@@ -75,7 +79,6 @@ class ParticleUpdate {
   };
   void move(Particles& particles, double h);
   void change_attributes(Particles& particles, double h);
-  long kill(Particles& particles, std::vector<Death>& bursts);
 
   Integrator integrator_;
   Vec3d gravity_{0, 0, 0}, wind_{0, 0, 0};

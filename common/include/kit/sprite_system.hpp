@@ -1,6 +1,7 @@
 #pragma once
 // A running sprite scene, frame by frame (Reeves 1983, §2): at the start of each frame every
-// active emitter emits, then every particle moves and ages by Δt = 1/fps, the dead are removed,
+// active emitter emits (ex 5.1 draws each particle), then every particle moves by Δt = 1/fps
+// (particle_update.hpp), ages and, if dead, is removed (ex 5.2),
 // and each death whose emitter has on_death bursts new particles where it died (fireworks).
 // Counts are exact: alive = emitted − dead after every frame.
 #include <cstdint>
@@ -12,6 +13,16 @@
 #include <kit/sprite_scene.hpp>
 
 namespace kit {
+
+/// The two steps a student writes (ex 5.1 and 5.2), plugged into the system by the chapter
+/// (chapters/shared/sprite_kernels.hpp): common/ never includes solutions/.
+using SampleParticle = ParticleSpawn (*)(const Emitter& emitter, std::uint8_t index, SpriteRandom& random);
+using AgeAndKill = long (*)(Particles& particles, float dt, const DeathRules& rules,
+                            const std::vector<bool>& bursts_on_death, std::vector<Death>& deaths);
+struct SpriteKernels {
+  SampleParticle sample;     ///< ex 5.1
+  AgeAndKill age_and_kill;  ///< ex 5.2
+};
 
 /// What one frame did.
 struct FrameCounts {
@@ -33,7 +44,7 @@ class SpriteSystem {
   /// `scene` must outlive the system. Reserves max_particles once: no allocation per frame
   /// after the first bursts.
   SpriteSystem(const SpriteScene& scene, long max_particles, double fps, std::uint64_t seed,
-               Integrator integrator);
+               Integrator integrator, SpriteKernels kernels);
   /// Runs one frame: emit, update (Δt = 1/fps), bursts.
   FrameCounts step();
   const Particles& particles() const { return particles_; }
@@ -46,6 +57,7 @@ class SpriteSystem {
   long emit(std::size_t emitter, long count, const Death* parent);
 
   const SpriteScene& scene_;
+  SpriteKernels kernels_;
   double dt_;
   SpriteRandom random_;
   ParticleUpdate update_;
