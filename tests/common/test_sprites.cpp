@@ -11,7 +11,7 @@
 #include <kit/emitter.hpp>
 #include <kit/particle_update.hpp>
 #include <kit/measure.hpp>
-#include <kit/sprite_system.hpp>
+#include <kit/sprite_trade.hpp>
 
 namespace {
 kit::SpriteScene one_emitter_scene() {
@@ -119,19 +119,17 @@ TEST_CASE("the closed form of gravity plus drag solves the ODE and is free fall 
 
 TEST_CASE("the integrators converge to the closed form at their orders; the exact step is exact",
           "[sprites]") {
-  const double g = -9.81, k = 0.8, w = 1.5, T = 2.0;
-  const kit::AxisState s0{0.0, 6.0};
-  const double exact = kit::drag_motion(s0, g, k, w, T).x;
+  kit::DragProblem problem;
+  problem.v0 = {1.0, 6.0, -0.5}, problem.gravity = {0, -9.81, 0}, problem.drag = 0.8;
+  problem.wind = {1.5, 0, 0.3}, problem.t_end = 2.0;
+  std::vector<double> dts;
+  for (int n = 16; n <= 1024; n *= 2) dts.push_back(problem.t_end / n);
   for (kit::Integrator integrator : kit::all_integrators) {
-    std::vector<double> dts, errors;
-    for (int n = 16; n <= 1024; n *= 2) {
-      const double h = T / n;
-      const kit::AxisStep a = kit::axis_step(integrator, k, h, g, w);
-      double x = s0.x, v = s0.v;
-      for (int i = 0; i < n; ++i) x += a.p * v + a.q, v = a.r * v + a.s;
-      dts.push_back(h), errors.push_back(std::abs(x - exact));
-    }
+    const auto runs = kit::trade_runs(problem, integrator, dts);
+    std::vector<double> errors;
+    for (const auto& run : runs) errors.push_back(run.error);
     INFO(kit::display_name(integrator));
+    CHECK(runs.back().steps == 1024);
     if (integrator == kit::Integrator::exact) {
       for (double e : errors) CHECK(e < 1e-12);
     } else {
