@@ -3,12 +3,30 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 #include <fmt/format.h>
 
 #include <kit/blend.hpp>
 
 namespace kit {
+namespace {
+// Where a rasterized sprite's pixels go: blended straight into the image (3 floats a pixel)…
+template <Blend mode>
+struct ImageTarget {
+  static constexpr int stride = 3;
+  Image& image;
+  float* row(int column, int row_index) { return image.pixel(column, row_index); }
+  void put(float* pixel, Rgb c, float alpha) const { blend<mode>(pixel, c, alpha); }
+};
+// … or into a SpriteTile (4 floats a pixel: colour and opacity) for ex 5.3 to composite.
+struct TileTarget {
+  static constexpr int stride = 4;
+  SpriteTile& tile;
+  float* row(int column, int row_index) { return tile.at(column - tile.x0, row_index - tile.y0); }
+  void put(float* pixel, Rgb c, float alpha) const { pixel[0] = c.r, pixel[1] = c.g, pixel[2] = c.b, pixel[3] = alpha; }
+};
+}  // namespace
 
 SpriteRenderer::SpriteRenderer(const SpriteScene& scene, int width, int height)
     : camera_(scene.camera, width, height), background_(scene.background) {
@@ -54,14 +72,22 @@ RenderStats SpriteRenderer::render(const Particles& particles, Image& out) {
   std::sort(over_.begin(), over_.end(), [](const Sprite& a, const Sprite& b) {
     return a.depth != b.depth ? a.depth > b.depth : a.index < b.index;
   });
-  for (const Sprite& sprite : over_) stats.pixels_blended += draw<Blend::over>(sprite, particles, out);
-  for (const Sprite& sprite : additive_) stats.pixels_blended += draw<Blend::additive>(sprite, particles, out);
+  for (const Sprite& sprite : over_) {
+    if (!composite_over_) {
+      stats.pixels_blended += draw(sprite, particles, out, ImageTarget<Blend::over>{out});
+      continue;
+    }
+    stats.pixels_blended += draw(sprite, particles, out, TileTarget{tile_});
+    composite_over_(out, tile_);
+  }
+  for (const Sprite& sprite : additive_)
+    stats.pixels_blended += draw(sprite, particles, out, ImageTarget<Blend::additive>{out});
   stats.sprites_drawn = static_cast<long>(over_.size() + additive_.size());
   return stats;
 }
 
-template <Blend mode>
-long SpriteRenderer::draw(const Sprite& sprite, const Particles& particles, Image& out) {
+template <class Target>
+long SpriteRenderer::draw(const Sprite& sprite, const Particles& particles, Image& out, Target target) {
   const std::size_t i = sprite.index;
   const std::vector<Texture>& mips = mips_of_emitter_[particles.emitter[i]];
   // The mip level whose texels are about one pixel: log2(texels per pixel), rounded down, so a
@@ -79,6 +105,8 @@ long SpriteRenderer::draw(const Sprite& sprite, const Particles& particles, Imag
   const int row_begin = std::max(0, static_cast<int>(std::floor(y0)));
   const int row_end = std::min(out.height, static_cast<int>(std::ceil(y1)));
   if (column_begin >= column_end || row_begin >= row_end) return 0;
+  if constexpr (std::is_same_v<Target, TileTarget>)
+    target.tile.reset(column_begin, row_begin, column_end - column_begin, row_end - row_begin);
 
   // Bilinear filtering is separable: the texel columns and weights depend on the image column
   // only, the texel rows on the image row only, so both are found once per sprite and row, and
@@ -105,8 +133,8 @@ long SpriteRenderer::draw(const Sprite& sprite, const Particles& particles, Imag
     const float down = static_cast<float>(t - t0);
     const float* upper = texture.texel(0, t0);
     const float* lower = texture.texel(0, std::min(t0 + 1, texture.height - 1));
-    float* pixel = out.pixel(column_begin, row);
-    for (int k = 0; k < columns; ++k, pixel += 3) {
+    float* pixel = target.row(column_begin, row);
+    for (int k = 0; k < columns; ++k, pixel += Target::stride) {
       const ColumnSample& c = column[k];
       const float* a = upper + 4 * c.left;
       const float* b = upper + 4 * c.right;
@@ -120,7 +148,7 @@ long SpriteRenderer::draw(const Sprite& sprite, const Particles& particles, Imag
       }
       const float alpha = texel[3] * row_opacity * c.coverage;
       if (!(alpha > 0)) continue;
-      blend<mode>(pixel, Rgb{texel[0] * tint.r, texel[1] * tint.g, texel[2] * tint.b}, alpha);
+      target.put(pixel, Rgb{texel[0] * tint.r, texel[1] * tint.g, texel[2] * tint.b}, alpha);
       ++blended;
     }
   }

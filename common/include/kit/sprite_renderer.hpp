@@ -9,6 +9,7 @@
 #include <kit/sprite_camera.hpp>
 #include <kit/sprite_scene.hpp>
 #include <kit/sprite_texture.hpp>
+#include <kit/sprite_tile.hpp>
 
 namespace kit {
 
@@ -18,6 +19,9 @@ struct RenderStats {
   long sprites_culled = 0;   ///< behind the near plane, wholly off the image, size or alpha ≤ 0
   long pixels_blended = 0;   ///< pixel writes, summed over sprites
 };
+
+/// Composites one rasterized sprite onto the image, "over" (ex 5.3, plugged in by the chapter).
+using CompositeOver = void (*)(Image& image, const SpriteTile& tile);
 
 class SpriteRenderer {
  public:
@@ -36,6 +40,10 @@ class SpriteRenderer {
   RenderStats render(const Particles& particles, Image& out);
 
   const SpriteCamera& camera() const { return camera_; }
+  /// From now on, "over" sprites are rasterized into a SpriteTile and composited by `composite`
+  /// (the student's ex 5.3); nullptr: the renderer blends them itself, pixel by pixel, as it
+  /// always does additive ones. Both give the same image for a correct `composite`.
+  void composite_over_with(CompositeOver composite) { composite_over_ = composite; }
 
  private:
   // One visible particle, placed on the image.
@@ -45,8 +53,10 @@ class SpriteRenderer {
     double depth;        // [m]
     std::uint32_t index;  // into the particles
   };
-  template <Blend mode>
-  long draw(const Sprite& sprite, const Particles& particles, Image& out);
+  // Rasterizes `sprite` into `target`: ImageTarget<mode> blends into the image, TileTarget
+  // writes the tile the student's compositing reads.
+  template <class Target>
+  long draw(const Sprite& sprite, const Particles& particles, Image& out, Target target);
 
   SpriteCamera camera_;
   Vec3d background_;
@@ -61,6 +71,8 @@ class SpriteRenderer {
     float coverage;
   };
   std::vector<ColumnSample> columns_;
+  CompositeOver composite_over_ = nullptr;
+  SpriteTile tile_;  // reused by every "over" sprite when composite_over_ is set
 };
 
 }  // namespace kit

@@ -1,0 +1,30 @@
+#pragma once
+// Ex 5.2: the end of a frame for every particle (Reeves 1983, §2.4): it ages by Δt, and it dies
+// when its age reaches its lifetime, when it fades below the scene's opacity threshold, or when
+// it leaves the scene's region. A dead particle is removed by swap-remove: the last alive
+// particle moves into its slot, so the arrays stay dense and nothing is allocated.
+#include <cstddef>
+#include <vector>
+
+#include <kit/not_implemented.hpp>
+#include <kit/particle_update.hpp>
+#include <kit/particles.hpp>
+#include <kit/sprite_scene.hpp>
+
+namespace kit {
+
+/// Adds dt [s] to every alive particle's age, then removes each particle with
+///   age ≥ lifetime,  or  alpha < rules.alpha_below (when set),
+///   or  a position outside rules.region = [min, max] on some axis (when set).
+/// A dead particle whose emitter e has bursts_on_death[e] is appended to `deaths` (position,
+/// velocity, emitter) before it is removed. Remove with particles.swap_remove(i), and test slot i
+/// again: it now holds the particle that was last. Returns the number of particles removed.
+inline long age_and_kill(Particles& particles, float dt, const DeathRules& rules,
+                         const std::vector<bool>& bursts_on_death, std::vector<Death>& deaths) {
+  long removed = 0;
+  // TODO(ex 5.2): age every particle, then scan: a dead one is recorded if it bursts, swap-removed, and its slot tested again
+  throw kit::NotImplemented("ex 5.2", "sprite_age_kill.hpp");
+  return removed;
+}
+
+}  // namespace kit
