@@ -9,6 +9,7 @@ function(kit_add_chapter name)
   target_compile_options(${name} PRIVATE ${KIT_WARNINGS})
   target_compile_definitions(${name} PRIVATE
     KIT_CHAPTER_NAME="${name}"
-    KIT_DEFAULT_FIGURE_DIR="${PROJECT_BINARY_DIR}/figures/${name}")
+    KIT_DEFAULT_FIGURE_DIR="${PROJECT_BINARY_DIR}/figures/${name}"
+    KIT_CHAPTER_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}/${name}")
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${PROJECT_BINARY_DIR}/bin")
 endfunction()

@@ -53,7 +53,9 @@ RenderStats SpriteRenderer::render(const Particles& particles, Image& out) {
       throw std::out_of_range(fmt::format("particle {} names emitter {}, but the scene has {} emitters", i, e,
                                           blend_of_emitter_.size()));
     const auto at = camera_.project(particles.x[i], particles.y[i], particles.z[i]);
-    if (!at || !(particles.alpha[i] > 0) || !(particles.size_m[i] > 0)) {
+    // A diverged particle (non-finite position) is culled like one behind the camera.
+    if (!at || !std::isfinite(at->px) || !std::isfinite(at->py) || !(particles.alpha[i] > 0) ||
+        !(particles.size_m[i] > 0)) {
       ++stats.sprites_culled;
       continue;
     }

@@ -473,7 +473,7 @@ SpriteScene parse_sprite_scene(std::string_view text, std::string_view file_name
   }
 
   const Section root(r, document, "");
-  root.only({"name", "frames", "fps", "max_particles", "background", "camera", "forces", "death", "emitter"});
+  root.only({"name", "frames", "fps", "warmup", "max_particles", "background", "camera", "forces", "death", "emitter"});
   SpriteScene scene;
   scene.file = std::string(file_name);
   const auto name = root.string("name");
@@ -482,6 +482,7 @@ SpriteScene parse_sprite_scene(std::string_view text, std::string_view file_name
   scene.name = *name;
   scene.frames = root.integer("frames", 1, 100'000).value_or(scene.frames);
   scene.fps = root.real("fps", closed(1, 1000)).value_or(scene.fps);
+  scene.warmup = root.real("warmup", closed(0, 600)).value_or(scene.warmup);
   scene.max_particles = root.integer("max_particles", 1, 50'000'000).value_or(scene.max_particles);
   scene.background = root.colour("background").value_or(scene.background);
 

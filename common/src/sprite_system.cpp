@@ -22,6 +22,11 @@ long SpriteSystem::emit(std::size_t index, long count, const Death* parent) {
       p.z += parent->z - float(e.position[2]);
       p.vx += keep * parent->vx, p.vy += keep * parent->vy, p.vz += keep * parent->vz;
     }
+    // Particles of one frame would leave the emitter together and move in bands, one per frame.
+    // Each is moved along its first step by a random fraction of Δt, as if it had been emitted
+    // at that moment of the frame (to first order in Δt; its age and lifetime are unchanged).
+    const float early = float(random_.unit() * dt_);
+    p.x += early * p.vx, p.y += early * p.vy, p.z += early * p.vz;
     p.id = next_id_;
     if (!particles_.add(p)) {
       dropped_this_frame_ += count - k;

@@ -6,9 +6,35 @@
 // allocated once reserve() has run.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace kit {
+
+/// An allocator whose resize leaves new floats uninitialised: reserving room for 50 million
+/// particles then costs address space, not memory, until particles are actually added.
+template <class T>
+struct UninitializedAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <class U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;  // default-initialisation: no zeroing
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+/// One attribute of every particle, contiguous.
+template <class T>
+using ParticleArray = std::vector<T, UninitializedAllocator<T>>;
 
 /// One new particle's attributes, as an emitter samples them (emitter.hpp).
 struct ParticleSpawn {
@@ -40,15 +66,15 @@ class Particles {
   static constexpr std::size_t bytes_per_particle = 13 * sizeof(float) + sizeof(std::uint8_t) + sizeof(std::uint32_t);
 
   // The arrays, each of length capacity(); entries at and past size() are unspecified.
-  std::vector<float> x, y, z;      ///< position [m]
-  std::vector<float> vx, vy, vz;   ///< velocity [m/s]
-  std::vector<float> age;          ///< time since emission [s]
-  std::vector<float> lifetime;     ///< age at which it dies [s]
-  std::vector<float> size_m;       ///< sprite edge [m]
-  std::vector<float> r, g, b;      ///< colour, linear in [0, 1]
-  std::vector<float> alpha;        ///< opacity in [0, 1]
-  std::vector<std::uint8_t> emitter;  ///< which emitter made it
-  std::vector<std::uint32_t> id;      ///< serial number of emission (never read by the update)
+  ParticleArray<float> x, y, z;      ///< position [m]
+  ParticleArray<float> vx, vy, vz;   ///< velocity [m/s]
+  ParticleArray<float> age;          ///< time since emission [s]
+  ParticleArray<float> lifetime;     ///< age at which it dies [s]
+  ParticleArray<float> size_m;       ///< sprite edge [m]
+  ParticleArray<float> r, g, b;      ///< colour, linear in [0, 1]
+  ParticleArray<float> alpha;        ///< opacity in [0, 1]
+  ParticleArray<std::uint8_t> emitter;  ///< which emitter made it
+  ParticleArray<std::uint32_t> id;      ///< serial number of emission (never read by the update)
 
  private:
   std::size_t count_ = 0;

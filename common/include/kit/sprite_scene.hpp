@@ -85,6 +85,9 @@ struct SpriteScene {
   std::string file;           ///< where it was read from
   long frames = 120;          ///< default for --frames
   double fps = 30;            ///< default for --fps
+  /// Seconds simulated before the first frame, so that a scene starts in its steady state
+  /// (snow already falling); those frames are counted but not rendered.
+  double warmup = 0;
   long max_particles = 100000;  ///< default for --max-particles
   std::vector<Emitter> emitters;
   SpriteForces forces;

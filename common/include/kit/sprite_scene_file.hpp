@@ -11,6 +11,7 @@
 //   name           string, required, not empty
 //   frames         integer in [1, 100000]                 default 120
 //   fps            number in [1, 1000]                    default 30
+//   warmup         number in [0, 600] [s], simulated before frame 0 (not rendered)   default 0
 //   max_particles  integer in [1, 50000000]               default 100000
 //   background     [r, g, b], each in [0, 1]              linear RGB
 //   [camera]       position, target: [x, y, z] [m], target != position; fov_deg in [1, 170]

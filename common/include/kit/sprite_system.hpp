@@ -3,7 +3,8 @@
 // active emitter emits (ex 5.1 draws each particle), then every particle moves by Δt = 1/fps
 // (particle_update.hpp), ages and, if dead, is removed (ex 5.2),
 // and each death whose emitter has on_death bursts new particles where it died (fireworks).
-// Counts are exact: alive = emitted − dead after every frame.
+// Counts are exact: alive = emitted − dead after every frame. A new particle starts a random
+// fraction of its first step along its velocity, so one frame's particles do not move in a band.
 #include <cstdint>
 #include <vector>
 

@@ -1,0 +1,131 @@
+// Chapter 5: sprites (lecture, "Applications / Sprites"; Reeves 1983). A sprite is a particle
+// that falls under gravity, lives for a limited time and is drawn as an animated, transparent
+// texture; its trajectory can be shown. The chapter prices the integrators against the closed
+// form of gravity plus drag, runs a scene (ex 5.1 emits, ex 5.2 ages and kills), renders its
+// frames (ex 5.3 composites "over"), and draws the counts and the paths.
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include <kit/animation.hpp>
+#include <kit/chapter_app.hpp>
+#include <kit/contact_sheet.hpp>
+#include <kit/measure.hpp>
+#include <kit/sprite_figures.hpp>
+#include <kit/sprite_flags.hpp>
+
+#include "sprite_kernels.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+
+// 1. "Particule tombant sous gravité": each integrator on the scene's mean particle against the
+//    closed form, at the frame rate and over a sweep of Δt; the error in metres and on screen.
+void falls_under_gravity(kit::ChapterApp& app, const kit::SpriteScene& scene,
+                         const kit::SpriteRunOptions& run) {
+  const kit::DragProblem mean = kit::mean_particle(scene);
+  const kit::SpriteCamera camera(scene.camera, run.width, run.height);
+  app.report().say("trade", "1. The mean particle of '{scene}' over its life of {t:.3g} s (k = {k} 1/s), "
+                   "against the closed form x(t) of gravity plus drag:\n",
+                   {{"scene", scene.name}, {"t", mean.t_end}, {"k", mean.drag}});
+  auto table = app.report().table("integrators", {{"integrator", "integrator"}, {"order", "order"},
+      {"fitted order", "fitted_order", "{:.3f}"}, {"error at 1/fps [m]", "error_at_fps", "{:.2e}"},
+      {"on screen [px]", "pixels_at_fps", "{:.2e}"}});
+  kit::TradeCurves curves;
+  for (kit::Integrator i : kit::all_integrators) {
+    const auto& runs = curves[i] = kit::trade_runs(mean, i, kit::trade_steps());
+    std::vector<double> dts, errors;  // the order, fitted where truncation beats round-off
+    for (const auto& r : runs)
+      if (r.error > 1e-10) dts.push_back(r.dt), errors.push_back(r.error);
+    const kit::TradeRun at_fps = kit::trade_runs(mean, i, {1.0 / run.fps}).front();
+    table.row(kit::flag_name(i), {std::string(kit::display_name(i)), long(kit::order(i)),
+              dts.size() > 2 ? kit::ReportValue(kit::fit_loglog(dts, errors).slope) : kit::ReportValue{},
+              at_fps.error, kit::pixels_between(camera, at_fps.position, at_fps.exact)});
+  }
+  table.print();
+  app.report().print("All four cost the same per particle-step (one affine map per axis); the exact step "
+                     "is free accuracy.\n\n");
+  app.figure(kit::trade_figure(curves, camera, run.fps, scene.name));
+}
+
+// 2. "Durée de vie limitée": the scene runs; every particle dies at the end of its life, or
+//    sooner by the scene's rules, and alive = emitted − dead after every frame.
+kit::SpriteRecording lives_and_dies(kit::ChapterApp& app, const kit::SpriteScene& scene,
+                                    const kit::SpriteRunOptions& run) {
+  const kit::SpriteRecording rec = kit::run_sprite_scene(scene, run, kit::student_kernels(scene.emitters[0]));
+  const kit::SpriteTotals& t = rec.totals;
+  app.report().say("counts", "2. {frames} frames of '{scene}' with {integrator}: emitted {emitted}, "
+                   "dead {dead}, alive {alive} = emitted - dead; at most {peak} alive, {dropped} not emitted "
+                   "(--max-particles {max}).\n", {{"frames", long(rec.frames.size())}, {"scene", scene.name},
+                   {"integrator", std::string(kit::display_name(run.integrator))}, {"emitted", t.emitted},
+                   {"dead", t.dead}, {"alive", t.alive()}, {"peak", rec.peak_alive}, {"dropped", t.dropped},
+                   {"max", run.max_particles}});
+  const kit::UpdateWork& w = rec.work;
+  app.report().say("work", "Work in particle-steps: motion {steps}, gravity {gravity}, drag {drag}, colour "
+                   "{colour}, alpha {alpha}, size {size}, opacity tests {alpha_checks}, region tests "
+                   "{region_checks}: a term the scene does not list costs nothing.\n",
+                   {{"steps", w.particle_steps}, {"gravity", w.gravity}, {"drag", w.drag},
+                    {"colour", w.colour}, {"alpha", w.alpha}, {"size", w.size}, {"alpha_checks", w.alpha_checks},
+                    {"region_checks", w.region_checks}});
+  if (rec.diverged_at >= 0)
+    app.diverged("scene", fmt::format("a position became infinite at frame {} (Δt = 1/{} s); the frames "
+                                      "so far are kept", rec.diverged_at, run.fps));
+  app.figure(kit::counts_figure(rec, run.fps, scene.name));
+  return rec;
+}
+
+// 3. "Plaque une texture transparente animée": the frames as a contact sheet and an animation.
+void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
+                      const kit::SpriteRunOptions& run) {
+  const fs::path out = app.options().out_dir;
+  app.report().say("frames", "3. {count} frames ({width}x{height}) in {dir}; {drawn} sprites drawn, "
+                   "{culled} culled, {pixels} pixels blended.\n", {{"count", long(rec.frame_files.size())},
+                   {"width", long(run.width)}, {"height", long(run.height)}, {"dir", run.frame_dir.string()},
+                   {"drawn", rec.render.sprites_drawn}, {"culled", rec.render.sprites_culled},
+                   {"pixels", rec.render.pixels_blended}});
+  kit::write_png(kit::contact_sheet(rec.sheet, 4, 8), out / "contact_sheet.png");
+  app.summary()["figures"]["contact_sheet"] = {(out / "contact_sheet.png").string()};
+  const kit::AnimationResult movie = kit::encode_animation(run.frame_dir / "frame_%04d.png", run.fps,
+                                                           out / "animation.mp4", out / "animation.gif");
+  for (const auto& file : movie.files) app.summary()["figures"]["animation"].push_back(file.string());
+  std::string made = "Animation:";
+  for (const auto& file : movie.files) made += " " + file.string();
+  app.report().say("animation", "{files}\n", {{"files", movie.files.empty() ? movie.note : made}});
+}
+
+// 4. "On peut afficher la trajectoire": a sample of paths, coloured by age.
+void trajectories(kit::ChapterApp& app, const kit::SpriteRecording& rec, const kit::SpriteScene& scene) {
+  app.report().say("paths", "4. Paths of {count} particles, side view, coloured by age.\n",
+                   {{"count", long(rec.paths.size())}});
+  app.figure(kit::paths_figure(rec, scene.name));
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  kit::SpriteFlags flags;
+  kit::ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR, "Chapter 5: sprites, a particle system");
+  kit::add_sprite_flags(app, flags);
+  app.add_divergence_flag();
+  return app.run(argc, argv, [&] {
+    const kit::SpriteScene scene = kit::load_scene_flag(flags, fs::path(KIT_CHAPTER_SOURCE_DIR) / "scenes");
+    const bool render = !app.options().no_plot;
+    const fs::path frames = render ? fs::path(app.options().out_dir) / "frames" : fs::path();
+    const auto run = kit::run_options(flags, scene, frames);
+    kit::announce_run(app.report(), "animation", "The animation", kit::estimate_sprite_run(scene, run),
+                      fmt::format("--frames {}, --max-particles {}, --width {}, --height {}", run.frames,
+                                  run.max_particles, run.width, run.height),
+                      {.max_bytes = kit::machine_memory()});
+    app.summary()["scene"] = {{"name", scene.name}, {"file", scene.file}, {"frames", run.frames},
+                              {"fps", run.fps}, {"max_particles", run.max_particles}};
+    app.section("the integrators", [&] { falls_under_gravity(app, scene, run); });
+    const kit::CompositeOver over = render ? kit::student_over(app.report()) : nullptr;
+    app.section("the scene", [&] {
+      auto with_over = run;
+      with_over.over = over;
+      const kit::SpriteRecording rec = lives_and_dies(app, scene, with_over);
+      if (render) animated_texture(app, rec, with_over);
+      trajectories(app, rec, scene);
+    });
+  });
+}

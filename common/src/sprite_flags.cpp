@@ -1,0 +1,72 @@
+#include <kit/sprite_flags.hpp>
+
+#include <climits>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <kit/sprite_scene_file.hpp>
+#include <kit/usage.hpp>
+
+namespace kit {
+namespace {
+Integrator integrator_named(const std::string& name) {
+  for (Integrator i : all_integrators)
+    if (flag_name(i) == name) return i;
+  throw UsageError(fmt::format("--integrator: '{}' is not one of euler, symplectic, midpoint, exact", name));
+}
+
+std::string shipped_scenes(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+}  // namespace
+
+void add_sprite_flags(ChapterApp& app, SpriteFlags& f) {
+  app.cli()
+      .add_option("--scene", f.scene, "scene: a name under chapters/05-sprites/scenes/ or a path to a .toml file")
+      ->type_name("NAME|FILE");
+  app.add_count("--frames", f.frames, "frames to run (default: the scene's)", 1, 100000);
+  app.add_real("--fps", f.fps, "frames per second, Δt = 1/fps [1/s] (default: the scene's)", between(1, 1000));
+  app.add_count("--seed", f.seed, "random seed: the same seed gives the same frames and data", 0, LONG_MAX);
+  app.cli()
+      .add_option("--integrator", f.integrator, "euler, symplectic, midpoint or exact (the closed form of gravity "
+                  "plus drag)")
+      ->check(CLI::IsMember({"euler", "symplectic", "midpoint", "exact"}))
+      ->capture_default_str();
+  app.add_count("--width", f.width, "frame width [px]", 16, 7680);
+  app.add_count("--height", f.height, "frame height [px]", 16, 4320);
+  app.add_count("--max-particles", f.max_particles, "particles alive at most (default: the scene's)", 1, 50'000'000);
+}
+
+SpriteScene load_scene_flag(const SpriteFlags& flags, const std::filesystem::path& scenes_dir) {
+  const bool is_path = flags.scene.find('/') != std::string::npos || flags.scene.ends_with(".toml");
+  const std::filesystem::path file = is_path ? std::filesystem::path(flags.scene) : scenes_dir / (flags.scene + ".toml");
+  if (!is_path && !std::filesystem::exists(file))
+    throw UsageError(fmt::format("--scene: no scene named '{}'; the shipped scenes are {} (or give a .toml path)",
+                                 flags.scene, shipped_scenes(scenes_dir)));
+  return load_sprite_scene(file);
+}
+
+SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene, const std::filesystem::path& frame_dir) {
+  SpriteRunOptions o;
+  o.frames = flags.frames > 0 ? flags.frames : scene.frames;
+  o.fps = flags.fps > 0 ? flags.fps : scene.fps;
+  o.warmup_frames = std::lround(scene.warmup * o.fps);
+  o.seed = std::uint64_t(flags.seed);
+  o.integrator = integrator_named(flags.integrator);
+  o.max_particles = flags.max_particles > 0 ? flags.max_particles : scene.max_particles;
+  o.width = int(flags.width), o.height = int(flags.height);
+  o.frame_dir = frame_dir;
+  return o;
+}
+
+double machine_memory() {
+  return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+}
+
+}  // namespace kit
