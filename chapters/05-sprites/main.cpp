@@ -92,6 +92,9 @@ void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
   std::string made = "Animation:";
   for (const auto& file : movie.files) made += " " + file.string();
   app.report().say("animation", "{files}\n", {{"files", movie.files.empty() ? movie.note : made}});
+  kit::write_player(out / "play.gp", "frames/frame_%04d.png", long(rec.frame_files.size()), run.fps, run.width,
+                    run.height);  // gnuplot -persist play.gp: the frames in a window
+  if (app.options().show) app.report().print(kit::show_player(out / "play.gp") + "\n");
 }
 
 // 4. "On peut afficher la trajectoire": a sample of paths, coloured by age.

@@ -1,5 +1,7 @@
 #include <kit/animation.hpp>
 
+#include <kit/figure.hpp>
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -145,6 +147,34 @@ AnimationResult encode_animation(const std::filesystem::path& frame_pattern, dou
   if (!failures.empty())
     result.note = fmt::format("{}; the PNG frames are kept in {}", fmt::join(failures, "; "), frames_folder);
   return result;
+}
+
+void write_player(const std::filesystem::path& player, const std::string& frame_pattern, long count, double fps,
+                  int width, int height) {
+  write_file_atomic(player, fmt::format(
+      "# Plays the frames of this folder in a window: gnuplot -persist {0}\n"
+      "unset key; unset border; unset tics; set margins 0,0,0,0; set size ratio {1}.0/{2}\n"
+      "do for [i = 0:{3}] {{\n"
+      "  plot sprintf('{4}', i) binary filetype=png with rgbimage\n"
+      "  pause {5}\n"
+      "}}\n", player.filename().string(), height, width, count - 1, frame_pattern, 1.0 / fps));
+}
+
+std::string show_player(const std::filesystem::path& player) {
+  if (const auto why = window_unavailable()) return fmt::format("--show: {}; the frames are written", *why);
+  std::vector<std::string> words{"gnuplot", "-persist", player.filename().string()};
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addchdir_np(&actions, player.parent_path().c_str());
+  pid_t child = 0;  // not waited for: the window outlives the chapter
+  const int error = posix_spawnp(&child, "gnuplot", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (error != 0) return fmt::format("--show: could not start gnuplot: {}", std::strerror(error));
+  return fmt::format("--show: playing the frames in a gnuplot window ({})", player.string());
 }
 
 }  // namespace kit

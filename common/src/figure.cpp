@@ -229,6 +229,12 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
   return gp.str();
 }
 
+std::optional<std::string> window_unavailable() {
+  if (!has_display()) return "no display (DISPLAY is unset)";
+  if (!gnuplot_has_window_terminal()) return "this gnuplot has no window terminal (gnuplot-nox); install gnuplot-qt to see windows";
+  return std::nullopt;
+}
+
 FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
   namespace fs = std::filesystem;
   for (const auto& format : options.formats)
@@ -267,10 +273,8 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
     }
   }
   if (options.show) {
-    if (!has_display()) {
-      result.notes.push_back("--show: no display (DISPLAY is unset); the figure files are written");
-    } else if (!gnuplot_has_window_terminal()) {
-      result.notes.push_back("--show: this gnuplot has no window terminal (gnuplot-nox); install gnuplot-qt to see windows");
+    if (const auto why = window_unavailable()) {
+      result.notes.push_back(fmt::format("--show: {}; the figure files are written", *why));
     } else {
       Gnuplot gp(fmt::format("cd {} && gnuplot -persist", shell_quoted(dir.string())));
       gp << "fmt = \"show\"\nload " << quoted(figure.name + ".gp") << "\n";

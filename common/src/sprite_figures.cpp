@@ -81,8 +81,9 @@ Figure counts_figure(const SpriteRecording& rec, double fps, const std::string& 
 }
 
 Figure paths_figure(const SpriteRecording& rec, const std::string& scene) {
-  Figure fig("paths", fmt::format("Paths of {} particles of '{}', coloured by age", rec.paths.size(), scene));
-  auto& p = fig.panel("x [m]", "height y [m] (up)", "side view");
+  Figure fig("paths", fmt::format("Paths of {} particles of '{}' seen from the side, coloured by age",
+                                  rec.paths.size(), scene));
+  auto& p = fig.panel("x [m]", "height y [m] (up)");
   p.commands.push_back("set size ratio -1");  // metres the same both ways
   double max_age = 0;
   for (const ParticlePath& path : rec.paths)

@@ -97,6 +97,10 @@ inline constexpr double log_axis_min = 1e-280, log_axis_max = 1e280;
 /// log axis.
 bool drawable(const Series& s, bool logx, bool logy);
 
+/// Why --show cannot open a window here ("no display (DISPLAY is unset)", "this gnuplot has no
+/// window terminal …"), or nothing when it can.
+std::optional<std::string> window_unavailable();
+
 /// The gnuplot script for `figure` reading `data_file` (exposed for tests).
 std::string gnuplot_script(const Figure& figure, const std::string& data_file);
 
