@@ -120,7 +120,8 @@ int main(int argc, char** argv) {
                                   run.max_particles, run.width, run.height),
                       {.max_bytes = kit::machine_memory()});
     app.summary()["scene"] = {{"name", scene.name}, {"file", scene.file}, {"frames", run.frames},
-                              {"fps", run.fps}, {"max_particles", run.max_particles}};
+                              {"fps", run.fps}, {"max_particles", run.max_particles},
+                              {"integrator", flags.integrator}, {"warmup_frames", run.warmup_frames}};
     app.section("the integrators", [&] { falls_under_gravity(app, scene, run); });
     const kit::CompositeOver over = render ? kit::student_over(app.report()) : nullptr;
     app.section("the scene", [&] {
