@@ -4,7 +4,7 @@ solved copy of exercises/, runs every part whose exercises are written, prints t
 results for those, and names each other part with the exercise it waits for.
 
 Three trees are built, chapters only, as `./kit --impl DIR run` builds them:
-  - "first": the first exercise of every chapter solved (1.1, 2.1, 3.1, 4.1), and R(z) (2.4)
+  - "first": the first exercise of every chapter solved (1.1, 2.1, 3.1, 4.1, 5.1), and R(z) (2.4)
     without the symplectic step (2.3) it is drawn beside; the rest stubs;
   - "rest": the opposite;
   - "none": exercises/ as shipped, nothing solved.
@@ -25,8 +25,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 import exercises  # noqa: E402
 
-CHAPTERS = ["01-free-fall", "02-spring-stability", "03-rk2", "04-adaptive-rk"]
-FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1"}
+CHAPTERS = ["01-free-fall", "02-spring-stability", "03-rk2", "04-adaptive-rk", "05-sprites"]
+FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1", "5.1"}
 
 
 def write_tree(path, solved):
@@ -103,6 +103,11 @@ def expectations(tree):
                 ("step doubling in the work-precision diagram",
                  lambda s: "step doubling, Euler" in s["work_precision"]),
             ],
+            "05-sprites": [
+                ("the integrators priced against the closed form (kit code, no exercise)",
+                 lambda s: near(s["integrators"]["midpoint"]["fitted_order"], 2, 0.05)),
+                ("the scene waits for ex 5.2 (emission alone cannot run it)", lambda s: "counts" not in s),
+            ],
         }
     if tree == "none":
         return {
@@ -112,6 +117,8 @@ def expectations(tree):
             "03-rk2": [("no scheme's order, and no empty figure drawn",
                         lambda s: not s.get("orders") and "convergence" in s["figures_waiting"])],
             "04-adaptive-rk": [("the kit's own DOPRI5 runs", lambda s: s["detail"]["rhs_evals"] == 985)],
+            "05-sprites": [("the integrators' trade, and no frame", lambda s: near(
+                s["integrators"]["euler"]["fitted_order"], 1, 0.05) and "contact_sheet" not in s.get("figures", {}))],
         }
     return {
         "01-free-fall": [
@@ -132,6 +139,10 @@ def expectations(tree):
         "04-adaptive-rk": [
             ("the student's Cash-Karp pair (ex 4.2, 4.3) in the work-precision diagram",
              lambda s: "Cash-Karp 5(4) (kit)" in s["work_precision"]),
+        ],
+        "05-sprites": [
+            ("the scene waits for ex 5.1; the student's over compositing (ex 5.3) is taken",
+             lambda s: "counts" not in s and not any("5.3" in e["reason"] for e in s.get("skipped", []))),
         ],
     }
 
