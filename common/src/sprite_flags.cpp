@@ -30,7 +30,7 @@ void add_sprite_flags(ChapterApp& app, SpriteFlags& f) {
   app.cli()
       .add_option("--scene", f.scene, "scene: a name under chapters/05-sprites/scenes/ or a path to a .toml file")
       ->type_name("NAME|FILE");
-  app.add_count("--frames", f.frames, "frames to run (default: the scene's)", 1, 100000);
+  app.add_count("--frames", f.frames, "frames to run (default: the scene's)", 1, 20000);
   app.add_real("--fps", f.fps, "frames per second, Δt = 1/fps [1/s] (default: the scene's)", between(1, 1000));
   app.add_count("--seed", f.seed, "random seed: the same seed gives the same frames and data", 0, LONG_MAX);
   app.cli()

@@ -480,7 +480,7 @@ SpriteScene parse_sprite_scene(std::string_view text, std::string_view file_name
   if (!name) root.missing("name", "a scene has a name");
   if (name->empty()) r.bad(*root.find("name"), "name", "must not be empty");
   scene.name = *name;
-  scene.frames = root.integer("frames", 1, 100'000).value_or(scene.frames);
+  scene.frames = root.integer("frames", 1, 20'000).value_or(scene.frames);
   scene.fps = root.real("fps", closed(1, 1000)).value_or(scene.fps);
   scene.warmup = root.real("warmup", closed(0, 600)).value_or(scene.warmup);
   scene.max_particles = root.integer("max_particles", 1, 50'000'000).value_or(scene.max_particles);

@@ -52,14 +52,19 @@ TEST_CASE("each shipped scene loads, with at least one emitter", "[sprite-scene]
   CHECK(files >= 4);
 }
 
-TEST_CASE("the shipped fireworks burst through a burst_only emitter found by name", "[sprite-scene]") {
+TEST_CASE("the shipped fireworks: each shell bursts through its own burst_only emitter, found by name",
+          "[sprite-scene]") {
   const auto scene = kit::load_sprite_scene(scene_dir / "fireworks.toml");
-  REQUIRE(scene.emitters.size() == 2);
-  CHECK(scene.emitters[0].on_death == 1);
-  CHECK(scene.emitters[1].burst_only);
-  CHECK_FALSE(scene.emitters[1].on_death);
-  CHECK(scene.emitters[1].inherit_velocity == 0.3);
-  CHECK(scene.emitters[0].rate.mean == 0.04);
+  REQUIRE(scene.emitters.size() == 6);
+  for (int shell = 0; shell < 3; ++shell) {
+    const int burst = shell + 3;
+    CHECK(scene.emitters[std::size_t(shell)].on_death == burst);
+    CHECK_FALSE(scene.emitters[std::size_t(shell)].burst_only);
+    CHECK(scene.emitters[std::size_t(burst)].burst_only);
+    CHECK_FALSE(scene.emitters[std::size_t(burst)].on_death);
+    CHECK(scene.emitters[std::size_t(burst)].inherit_velocity == 0.3);
+  }
+  CHECK(scene.emitters[0].rate.mean == 0.012);
   CHECK(scene.forces.gravity.has_value());
   CHECK(scene.death.region.has_value());
 }

@@ -9,7 +9,7 @@
 // the half-width of a uniform draw mean ± variance, >= 0; a number means variance 0):
 //
 //   name           string, required, not empty
-//   frames         integer in [1, 100000]                 default 120
+//   frames         integer in [1, 20000]                  default 120
 //   fps            number in [1, 1000]                    default 30
 //   warmup         number in [0, 600] [s], simulated before frame 0 (not rendered)   default 0
 //   max_particles  integer in [1, 50000000]               default 100000
