@@ -38,15 +38,21 @@ std::string first_line_of(const std::filesystem::path& file) {
   return {};
 }
 
+// The argv of a spawned program: pointers into `words`, ended by a null pointer.
+std::vector<char*> argv_of(std::vector<std::string>& words) {
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  return argv;
+}
+
 // Runs ffmpeg with `arguments` (argv[1..]) without a shell: stdin /dev/null, stdout and stderr
 // into `log`. Waits for it.
 RunOutcome run_ffmpeg(const std::filesystem::path& ffmpeg, const std::vector<std::string>& arguments,
                       const std::filesystem::path& log) {
   std::vector<std::string> words{ffmpeg.string()};
   words.insert(words.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
+  std::vector<char*> argv = argv_of(words);
 
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
@@ -163,9 +169,7 @@ void write_player(const std::filesystem::path& player, const std::string& frame_
 std::string show_player(const std::filesystem::path& player) {
   if (const auto why = window_unavailable()) return fmt::format("--show: {}; the frames are written", *why);
   std::vector<std::string> words{"gnuplot", "-persist", player.filename().string()};
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
+  std::vector<char*> argv = argv_of(words);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
