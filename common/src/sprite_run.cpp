@@ -47,6 +47,7 @@ RunEstimate estimate_sprite_run(const SpriteScene& scene, const SpriteRunOptions
 SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOptions& options, SpriteKernels kernels) {
   SpriteRecording rec;
   rec.warmup_frames = options.warmup_frames;
+  ProgressTask::set_total(double(options.warmup_frames + options.frames));  // the section's bar counts frames
   SpriteSystem system(scene, options.max_particles, options.fps, options.seed, options.integrator, kernels);
   const bool render = !options.frame_dir.empty();
   std::optional<SpriteRenderer> renderer;

@@ -12,6 +12,7 @@ import pty
 import select
 import subprocess
 import sys
+import tempfile
 
 # About 5e9 explicit Euler steps (the round-off sweep at its budget): several seconds anywhere.
 LONG = ["--no-plot", "--t-end", "10"]
@@ -105,6 +106,19 @@ def main(argv):
     code, _, _, terminal = run(binary, LONG, stdout_tty=True, stderr_tty=True, progress="never")
     check("KIT_PROGRESS=never: no line on a terminal",
           code == 0 and BAR not in terminal and "\x1b[K" not in terminal)
+
+    # 5. Chapter 5's rendering: frames at 1280x720 take seconds; the bar counts frames.
+    sprites = pathlib.Path(argv[1]) / "05-sprites"
+    with tempfile.TemporaryDirectory() as out:
+        code, _, _, terminal = run(sprites, ["--frames", "150", "--width", "1280", "--height", "720", "--format",
+                                             "png", "--out", out], stdout_tty=True, stderr_tty=True)
+        check("chapter 5 on a terminal: exit 0", code == 0)
+        check("chapter 5 on a terminal: a progress bar while the frames render",
+              "the scene  [" in terminal and "%" in terminal)
+        check("chapter 5 on a terminal: erased before the text goes on", "\r\x1b[K" in terminal)
+        code, _, err, _ = run(sprites, ["--frames", "150", "--width", "1280", "--height", "720", "--format", "png",
+                                        "--out", out], stdout_tty=True, stderr_tty=False)
+        check("chapter 5, stderr a pipe: no bar", code == 0 and "the scene  [" not in err and "\r" not in err)
 
     print(f"{len(problems)} problems")
     return 1 if problems else 0
