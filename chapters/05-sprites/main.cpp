@@ -10,7 +10,6 @@
 
 #include <kit/animation.hpp>
 #include <kit/chapter_app.hpp>
-#include <kit/contact_sheet.hpp>
 #include <kit/measure.hpp>
 #include <kit/sprite_figures.hpp>
 #include <kit/sprite_flags.hpp>
@@ -35,9 +34,10 @@ void falls_under_gravity(kit::ChapterApp& app, const kit::SpriteScene& scene,
   kit::TradeCurves curves;
   for (kit::Integrator i : kit::all_integrators) {
     const auto& runs = curves[i] = kit::trade_runs(mean, i, kit::trade_steps());
-    std::vector<double> dts, errors;  // the order, fitted where truncation beats round-off
+    std::vector<double> dts, errors;  // the order, fitted where asymptotic (kΔt < 0.5) and above round-off
     for (const auto& r : runs)
-      if (r.error > 1e-10) dts.push_back(r.dt), errors.push_back(r.error);
+      if (r.dt * mean.drag < 0.5 && r.error > kit::trade_roundoff(r))
+        dts.push_back(r.dt), errors.push_back(r.error);
     const kit::TradeRun at_fps = kit::trade_runs(mean, i, {1.0 / run.fps}).front();
     table.row(kit::flag_name(i), {std::string(kit::display_name(i)), long(kit::order(i)),
               dts.size() > 2 ? kit::ReportValue(kit::fit_loglog(dts, errors).slope) : kit::ReportValue{},
@@ -66,8 +66,8 @@ kit::SpriteRecording lives_and_dies(kit::ChapterApp& app, const kit::SpriteScene
                    "{colour}, alpha {alpha}, size {size}, opacity tests {alpha_checks}, region tests "
                    "{region_checks}: a term the scene does not list costs nothing.\n",
                    {{"steps", w.particle_steps}, {"gravity", w.gravity}, {"drag", w.drag},
-                    {"colour", w.colour}, {"alpha", w.alpha}, {"size", w.size}, {"alpha_checks", w.alpha_checks},
-                    {"region_checks", w.region_checks}});
+                    {"colour", w.colour}, {"alpha", w.alpha}, {"size", w.size},
+                    {"alpha_checks", w.alpha_checks}, {"region_checks", w.region_checks}});
   if (rec.diverged_at >= 0)
     app.diverged("scene", fmt::format("a position became infinite at frame {} (Δt = 1/{} s); the frames "
                                       "so far are kept", rec.diverged_at, run.fps));
@@ -84,17 +84,21 @@ void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
                    {"width", long(run.width)}, {"height", long(run.height)}, {"dir", run.frame_dir.string()},
                    {"drawn", rec.render.sprites_drawn}, {"culled", rec.render.sprites_culled},
                    {"pixels", rec.render.pixels_blended}});
-  kit::write_png(kit::contact_sheet(rec.sheet, 4, 8), out / "contact_sheet.png");
-  app.summary()["figures"]["contact_sheet"] = {(out / "contact_sheet.png").string()};
-  const kit::AnimationResult movie = kit::encode_animation(run.frame_dir / "frame_%04d.png", run.fps,
-                                                           out / "animation.mp4", out / "animation.gif");
-  for (const auto& file : movie.files) app.summary()["figures"]["animation"].push_back(file.string());
-  std::string made = "Animation:";
-  for (const auto& file : movie.files) made += " " + file.string();
-  app.report().say("animation", "{files}\n", {{"files", movie.files.empty() ? movie.note : made}});
-  kit::write_player(out / "play.gp", "frames/frame_%04d.png", long(rec.frame_files.size()), run.fps, run.width,
-                    run.height);  // gnuplot -persist play.gp: the frames in a window
-  if (app.options().show) app.report().print(kit::show_player(out / "play.gp") + "\n");
+  const auto made = kit::write_animation(rec, run, out);
+  if (!made) {
+    app.report().print("No frame was rendered (the run diverged first): no contact sheet, no animation.\n");
+    return;
+  }
+  app.summary()["figures"]["contact_sheet"] = {made->sheet.string()};
+  std::string movie = "Animation:";
+  for (const auto& file : made->movie.files) {
+    app.summary()["figures"]["animation"].push_back(file.string());
+    movie += " " + file.string();
+  }
+  app.report().say("animation", "{files}\nPlay the frames: gnuplot -persist {player}\n",
+                   {{"files", made->movie.files.empty() ? made->movie.note : movie},
+                    {"player", made->player.string()}});
+  if (app.options().show) app.report().print(kit::show_player(made->player) + "\n");
 }
 
 // 4. "On peut afficher la trajectoire": a sample of paths, coloured by age.

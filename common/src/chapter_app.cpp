@@ -123,7 +123,8 @@ void ChapterApp::figure(const Figure& fig) {
     return std::any_of(panel.series.begin(), panel.series.end(), [](const Series& s) { return !s.x.empty(); });
   };
   if (std::none_of(fig.panels.begin(), fig.panels.end(), has_data)) {
-    report_.print(fmt::format("[skipped] figure {}: nothing to draw until its methods are written\n", fig.name));
+    report_.print(fmt::format("[skipped] figure {}: no data to draw (its methods wait for their exercises, or the "
+                              "run gave none)\n", fig.name));
     summary_["figures_waiting"].push_back(fig.name);
     return;
   }

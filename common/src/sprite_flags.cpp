@@ -1,11 +1,13 @@
 #include <kit/sprite_flags.hpp>
 
 #include <climits>
+#include <map>
 #include <unistd.h>
 
 #include <fmt/format.h>
 
 #include <kit/sprite_scene_file.hpp>
+#include <kit/sprite_texture.hpp>
 #include <kit/usage.hpp>
 
 namespace kit {
@@ -52,6 +54,23 @@ SpriteScene load_scene_flag(const SpriteFlags& flags, const std::filesystem::pat
   return load_sprite_scene(file);
 }
 
+double check_textures(const SpriteScene& scene) {
+  std::map<std::string, double> bytes;
+  for (std::size_t i = 0; i < scene.emitters.size(); ++i) {
+    const std::string& name = scene.emitters[i].texture;
+    if (bytes.count(name)) continue;
+    try {
+      const Texture t = texture_for(name);
+      bytes[name] = double(t.rgba.size() * sizeof(float)) * 4.0 / 3.0;  // mip levels add a third
+    } catch (const UsageError& e) {
+      throw UsageError(fmt::format("{}: emitter[{}].texture: {}", scene.file, i, e.what()));
+    }
+  }
+  double total = 0;
+  for (const auto& [name, b] : bytes) total += b;
+  return total;
+}
+
 SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene, const std::filesystem::path& frame_dir) {
   SpriteRunOptions o;
   o.frames = flags.frames > 0 ? flags.frames : scene.frames;
@@ -62,6 +81,7 @@ SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene,
   o.max_particles = flags.max_particles > 0 ? flags.max_particles : scene.max_particles;
   o.width = int(flags.width), o.height = int(flags.height);
   o.frame_dir = frame_dir;
+  o.texture_bytes = check_textures(scene);
   return o;
 }
 

@@ -32,7 +32,10 @@ SpriteRenderer::SpriteRenderer(const SpriteScene& scene, int width, int height)
     : camera_(scene.camera, width, height), background_(scene.background) {
   for (const Emitter& emitter : scene.emitters) {
     blend_of_emitter_.push_back(emitter.blend);
-    mips_of_emitter_.push_back(mip_levels(texture_for(emitter.texture)));
+    // One copy of each texture, however many emitters share it.
+    const auto [at, added] = texture_index_.try_emplace(emitter.texture, textures_.size());
+    if (added) textures_.push_back(mip_levels(texture_for(emitter.texture)));
+    texture_of_emitter_.push_back(at->second);
   }
   columns_.resize(static_cast<std::size_t>(width));
 }
@@ -91,7 +94,7 @@ RenderStats SpriteRenderer::render(const Particles& particles, Image& out) {
 template <class Target>
 long SpriteRenderer::draw(const Sprite& sprite, const Particles& particles, Image& out, Target target) {
   const std::size_t i = sprite.index;
-  const std::vector<Texture>& mips = mips_of_emitter_[particles.emitter[i]];
+  const std::vector<Texture>& mips = textures_[texture_of_emitter_[particles.emitter[i]]];
   // The mip level whose texels are about one pixel: log2(texels per pixel), rounded down, so a
   // sprite of a pixel or less shows the texture's average (its 1 × 1 level).
   const double texels_per_pixel = mips.front().width / sprite.edge;
@@ -102,10 +105,12 @@ long SpriteRenderer::draw(const Sprite& sprite, const Particles& particles, Imag
   // The square [x0, x1) × [y0, y1) in continuous pixel coordinates, clipped to the image.
   const double x0 = sprite.px - 0.5 * sprite.edge, x1 = sprite.px + 0.5 * sprite.edge;
   const double y0 = sprite.py - 0.5 * sprite.edge, y1 = sprite.py + 0.5 * sprite.edge;
-  const int column_begin = std::max(0, static_cast<int>(std::floor(x0)));
-  const int column_end = std::min(out.width, static_cast<int>(std::ceil(x1)));
-  const int row_begin = std::max(0, static_cast<int>(std::floor(y0)));
-  const int row_end = std::min(out.height, static_cast<int>(std::ceil(y1)));
+  // Clamped as doubles first: a sprite next to the camera can span more pixels than an int holds.
+  const auto inside = [](double v, int size) { return std::clamp(v, 0.0, double(size)); };
+  const int column_begin = static_cast<int>(std::floor(inside(x0, out.width)));
+  const int column_end = static_cast<int>(std::ceil(inside(x1, out.width)));
+  const int row_begin = static_cast<int>(std::floor(inside(y0, out.height)));
+  const int row_end = static_cast<int>(std::ceil(inside(y1, out.height)));
   if (column_begin >= column_end || row_begin >= row_end) return 0;
   if constexpr (std::is_same_v<Target, TileTarget>)
     target.tile.reset(column_begin, row_begin, column_end - column_begin, row_end - row_begin);

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include <fmt/format.h>
 
+#include <kit/contact_sheet.hpp>
 #include <kit/progress.hpp>
 
 namespace kit {
@@ -14,7 +16,9 @@ namespace {
 // update moves 64 B a particle-step; a frame's pixels are cleared, blended and PNG-encoded).
 constexpr double seconds_per_particle_step = 5e-9;
 constexpr double seconds_per_sprite = 2e-7;
-constexpr double seconds_per_pixel = 4e-8;
+constexpr double seconds_per_blend = 3e-9;      // one pixel of one sprite
+constexpr double seconds_per_emission = 2e-7;   // one particle drawn by ex 5.1 and stored
+constexpr double seconds_per_pixel = 4e-8;      // one pixel of the frame: cleared, encoded, written
 
 bool finite_positions(const Particles& ps) {
   float sum = 0;  // one non-finite coordinate makes the sum non-finite
@@ -23,24 +27,63 @@ bool finite_positions(const Particles& ps) {
 }
 }  // namespace
 
+std::vector<double> emissions_per_frame(const SpriteScene& scene) {
+  std::vector<double> rate(scene.emitters.size(), 0.0);
+  for (std::size_t i = 0; i < rate.size(); ++i)
+    if (!scene.emitters[i].burst_only) rate[i] = std::max(scene.emitters[i].rate.mean, 0.0);
+  // Every particle dies once, so a parent emitting r a frame bursts r times a frame. Chains are
+  // acyclic (the loader refuses loops), so as many passes as emitters settle them.
+  for (std::size_t pass = 0; pass < rate.size(); ++pass)
+    for (std::size_t i = 0; i < rate.size(); ++i) {
+      if (!scene.emitters[i].burst_only) continue;
+      double bursts = 0;
+      for (std::size_t p = 0; p < rate.size(); ++p)
+        if (scene.emitters[p].on_death == int(i)) bursts += rate[p];
+      rate[i] = bursts * std::max(scene.emitters[i].rate.mean, 0.0);
+    }
+  return rate;
+}
+
 double expected_alive(const SpriteScene& scene, const SpriteRunOptions& options) {
+  const std::vector<double> rate = emissions_per_frame(scene);
   double alive = 0;
-  for (const Emitter& e : scene.emitters)
-    if (!e.burst_only) alive += e.rate.mean * e.lifetime.mean * options.fps;
+  for (std::size_t i = 0; i < rate.size(); ++i) alive += rate[i] * scene.emitters[i].lifetime.mean * options.fps;
   return std::min(alive, double(options.max_particles));
 }
 
 RunEstimate estimate_sprite_run(const SpriteScene& scene, const SpriteRunOptions& options) {
+  const std::vector<double> rate = emissions_per_frame(scene);
   const double alive = expected_alive(scene, options), pixels = double(options.width) * options.height;
+  double emitted = 0, wanted = 0, blended = 0;
+  const double focal = 0.5 * options.height / std::tan(scene.camera.fov_deg * M_PI / 360.0);
+  for (std::size_t i = 0; i < rate.size(); ++i) {
+    const Emitter& e = scene.emitters[i];
+    emitted += rate[i];
+    const double share = rate[i] * e.lifetime.mean * options.fps;  // this emitter's alive, uncapped
+    wanted += share;
+    // A sprite's area on screen, seen from the camera's distance to its emitter (capped at the image).
+    const double distance = std::hypot(e.position[0] - scene.camera.position[0],
+                                       e.position[1] - scene.camera.position[1], e.position[2] - scene.camera.position[2]);
+    const double edge = e.size.mean * focal / std::max(distance, 0.05);
+    blended += share * std::min(edge * edge + 1.0, pixels);
+  }
+  if (wanted > alive) blended *= alive / wanted;  // the store is full: fewer sprites than wanted
+  // Each frame's emission loop stops at its first refused particle: at most max_particles draws.
+  emitted = std::min(emitted, double(options.max_particles) + double(rate.size()));
   const bool render = !options.frame_dir.empty();
   RunEstimate estimate;
-  estimate.steps = double(options.frames + options.warmup_frames);
-  estimate.seconds_per_step =
-      alive * seconds_per_particle_step + (render ? alive * seconds_per_sprite + pixels * seconds_per_pixel : 0.0) *
-      double(options.frames) / double(options.frames + options.warmup_frames);
-  // The arrays, the renderer's sprite lists, and the frame plus the contact sheet's frames.
-  estimate.bytes = double(options.max_particles) * double(Particles::bytes_per_particle + 40) +
-                   (render ? pixels * 12.0 * (1 + options.sheet_frames) : 0.0);
+  const double frames = double(options.frames + options.warmup_frames);
+  estimate.steps = frames;
+  const double render_share = double(options.frames) / frames;
+  estimate.seconds_per_step = alive * seconds_per_particle_step + emitted * seconds_per_emission +
+      (render ? (alive * seconds_per_sprite + blended * seconds_per_blend + pixels * seconds_per_pixel) * render_share
+              : 0.0);
+  // The arrays, the renderer's sprite lists and the deaths of a frame; the frame, the frames kept
+  // for the contact sheet, the sheet itself and its 8-bit copy; the textures.
+  estimate.bytes = double(options.max_particles) * double(Particles::bytes_per_particle + 40 + sizeof(Death)) +
+                   (render ? pixels * 12.0 * (1 + 2 * options.sheet_frames) + pixels * 3.0 * options.sheet_frames +
+                                 options.texture_bytes
+                           : 0.0);
   return estimate;
 }
 
@@ -55,6 +98,10 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
     renderer.emplace(scene, options.width, options.height);
     renderer->composite_over_with(options.over);
     std::filesystem::create_directories(options.frame_dir);
+    // An earlier run's frames would join this run's animation (ffmpeg reads until one is missing).
+    for (const auto& entry : std::filesystem::directory_iterator(options.frame_dir))
+      if (entry.path().filename().string().starts_with("frame_") && entry.path().extension() == ".png")
+        std::filesystem::remove(entry.path());
   }
   Image image(options.width, options.height, scene.background);
   // Paths: every stride-th particle of the first half of the run's expected emissions.
@@ -72,7 +119,9 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
       rec.diverged_at = k;
       break;
     }
-    for (std::size_t i = 0; i < ps.size(); ++i) {
+    // Ids are 32-bit serial numbers: after 2^32 emissions they repeat, and paths stop growing.
+    const bool ids_unique = system.totals().emitted <= long(std::numeric_limits<std::uint32_t>::max());
+    for (std::size_t i = 0; ids_unique && i < ps.size(); ++i) {
       if (ps.id[i] % stride != 0 || ps.id[i] / stride >= std::uint32_t(options.paths)) continue;
       ParticlePath& path = paths[ps.id[i]];
       path.id = ps.id[i];
@@ -93,6 +142,19 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
   rec.work = system.work();
   for (auto& [id, path] : paths) rec.paths.push_back(std::move(path));
   return rec;
+}
+
+std::optional<AnimationOutputs> write_animation(const SpriteRecording& rec, const SpriteRunOptions& options,
+                                                const std::filesystem::path& out) {
+  if (rec.frame_files.empty()) return std::nullopt;
+  AnimationOutputs made{out / "contact_sheet.png", out / "play.gp", {}};
+  write_png(contact_sheet(rec.sheet, 4, 8), made.sheet);
+  made.movie = encode_animation(options.frame_dir / "frame_%04d.png", options.fps, out / "animation.mp4",
+                                out / "animation.gif");
+  const auto frames = std::filesystem::relative(options.frame_dir, out) / "frame_%04d.png";
+  write_player(made.player, frames.string(), long(rec.frame_files.size()), options.fps, options.width,
+               options.height);
+  return made;
 }
 
 }  // namespace kit

@@ -291,7 +291,7 @@ void read_camera(const Section& s, Camera& camera) {
 void read_forces(const Reader& r, const Section& s, SpriteForces& forces) {
   s.only({"gravity", "drag", "wind"});
   forces.gravity = s.vec3("gravity", symmetric(max_rate_of_change));
-  forces.drag = s.real("drag", above(0, 1000));
+  forces.drag = s.real("drag", closed(1e-9, 1000));  // k below 1e-9 1/s: no drag a scene could see
   forces.wind = s.vec3("wind", symmetric(max_rate_of_change));
   if (forces.wind && !forces.drag)
     r.bad(*s.find("wind"), s.key("wind"),

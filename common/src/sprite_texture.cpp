@@ -1,5 +1,7 @@
 #include <kit/sprite_texture.hpp>
 
+#include <cctype>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -136,7 +138,9 @@ Texture texture_for(const std::string& name_or_png_path) {
   for (std::string_view builtin : builtin_texture_names)
     if (name_or_png_path == builtin) return builtin_texture(builtin);
   const std::filesystem::path path(name_or_png_path);
-  if (path.extension() != ".png" && path.extension() != ".PNG")
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".png")
     throw UsageError(fmt::format("unknown texture '{}': the built-in textures are {}, or give a PNG file's path",
                                  name_or_png_path, builtin_list()));
   try {

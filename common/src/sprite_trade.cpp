@@ -1,5 +1,6 @@
 #include <kit/sprite_trade.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <kit/drag_motion.hpp>
@@ -20,7 +21,7 @@ DragProblem mean_particle(const SpriteScene& scene) {
   if (scene.forces.gravity) p.gravity = *scene.forces.gravity;
   if (scene.forces.drag) p.drag = *scene.forces.drag;
   if (scene.forces.wind) p.wind = *scene.forces.wind;
-  p.t_end = e.lifetime.mean;
+  p.t_end = std::min(e.lifetime.mean, max_trade_horizon);
   return p;
 }
 
@@ -43,6 +44,11 @@ std::vector<TradeRun> trade_runs(const DragProblem& problem, Integrator integrat
     runs.push_back(run);
   }
   return runs;
+}
+
+double trade_roundoff(const TradeRun& run) {
+  const double size = 1.0 + std::hypot(run.exact[0], run.exact[1], run.exact[2]);
+  return 100.0 * 2.2e-16 * double(run.steps) * size;
 }
 
 std::vector<double> trade_steps() {

@@ -197,6 +197,41 @@ TEST_CASE("chapter 5: explicit Euler past Δt = 2/k diverges: a reported result,
   CHECK(kit::test::run_process(binary, failing).exit_code == 3);
   const json exact = run_chapter({"--scene", stiff.string(), "--fps", "1", "--frames", "400"});
   CHECK_FALSE(exact.contains("divergences"));  // the closed form is stable at any Δt
+  // Diverged while warming up, before any frame is drawn: still a result, with figures on.
+  const auto warm = write_scene(dir.path(), "warm.toml",
+      "name = 'warm'\nwarmup = 100\n[forces]\ndrag = 10\n[[emitter]]\nname = 'a'\nrate = 5\nspeed = 5\n"
+      "lifetime = 1000\n");
+  kit::test::TempDir out("ch05-warm");
+  const auto drawn = kit::test::run_process(binary, {"--scene", warm.string(), "--fps", "1", "--frames", "5",
+                                                     "--integrator", "euler", "--format", "png", "--out",
+                                                     out.path().string()});
+  INFO(drawn.err);
+  CHECK(drawn.exit_code == 0);
+  CHECK_THAT(drawn.out, Catch::Contains("No frame was rendered"));
+  CHECK(fs::exists(out.path() / "counts.png"));
+}
+
+TEST_CASE("chapter 5: a rerun into the same folder animates its own frames, not an earlier run's") {
+  kit::test::TempDir out("ch05-rerun");
+  const std::vector<std::string> small{"--width", "32", "--height", "18", "--format", "png"};
+  auto with_frames = [&](const std::string& n) {
+    auto v = small;
+    v.insert(v.end(), {"--frames", n});
+    return v;
+  };
+  run_chapter(with_frames("12"), out.path());
+  const json second = run_chapter(with_frames("4"), out.path());
+  CHECK(kit::test::files_under(out.path() / "frames").size() == 4);
+  CHECK_THAT(slurp(out.path() / "play.gp"), Catch::Contains("[i = 0:3]"));
+  CHECK(second["frames"]["count"] == 4);
+}
+
+TEST_CASE("chapter 5: a texture that is not there is a usage error before anything is written") {
+  kit::test::TempDir dir("ch05-texture");
+  const auto scene = write_scene(dir.path(), "textured.toml",
+      "name = 'x'\n[[emitter]]\nname = 'a'\ntexture = 'missing.png'\n");
+  kit::test::expect_usage_errors(binary, {{{"--scene", scene.string()}, "emitter[0].texture"},
+                                          {{"--scene", scene.string(), "--no-plot"}, "missing.png"}});
 }
 
 TEST_CASE("chapter 5: without ffmpeg the chapter says so and keeps the PNG frames") {

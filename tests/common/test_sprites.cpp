@@ -3,6 +3,7 @@
 // terms a scene lists.
 #include <cmath>
 #include <map>
+#include <random>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -115,6 +116,31 @@ TEST_CASE("the closed form of gravity plus drag solves the ODE and is free fall 
   const auto fall = kit::drag_motion(s, g, 1e-12, w, 2.0);
   CHECK(fall.x == Approx(1.0 + 3.0 * 2.0 + g * 2.0).epsilon(1e-10));
   CHECK(kit::drag_motion(s, g, 0.0, w, 2.0).x == 1.0 + 3.0 * 2.0 + g * 2.0);
+}
+
+TEST_CASE("each integrator's affine step is that scheme's step, written out", "[sprites]") {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> any(-5, 5), rate(0, 3), step(1e-3, 0.5);
+  for (int trial = 0; trial < 200; ++trial) {
+    const double k = rate(rng), h = step(rng), g = any(rng), w = any(rng), x = any(rng), v = any(rng);
+    const auto a = [&](double u) { return g - k * (u - w); };  // dv/dt
+    const auto apply = [&](kit::Integrator i) {
+      const kit::AxisStep c = kit::axis_step(i, k, h, g, w);
+      return std::pair{x + c.p * v + c.q, c.r * v + c.s};
+    };
+    const double half = v + h / 2 * a(v), kicked = v + h * a(v);
+    const std::pair<double, double> expected[] = {
+        {x + h * v, kicked},                  // explicit Euler: the old velocity moves x
+        {x + h * kicked, kicked},             // symplectic Euler: the new one does
+        {x + h * half, v + h * a(half)},      // midpoint: the half-step velocity does both
+        {kit::drag_motion({x, v}, g, k, w, h).x, kit::drag_motion({x, v}, g, k, w, h).v}};
+    for (kit::Integrator i : kit::all_integrators) {
+      const auto [x1, v1] = apply(i);
+      INFO(kit::display_name(i) << ": k = " << k << ", h = " << h);
+      CHECK(x1 == Approx(expected[int(i)].first).epsilon(1e-12).margin(1e-12));
+      CHECK(v1 == Approx(expected[int(i)].second).epsilon(1e-12).margin(1e-12));
+    }
+  }
 }
 
 TEST_CASE("the integrators converge to the closed form at their orders; the exact step is exact",

@@ -1,4 +1,5 @@
 // ex 5.1: one new particle of an emitter, every attribute mean + rand·variance (sprite_emit.hpp).
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -25,11 +26,13 @@ kit::Emitter cone_emitter() {
 double length(double x, double y, double z) { return std::hypot(x, y, z); }
 
 // Pearson's chi-square of `values` against the uniform law on [lo, hi], over 10 equal bins.
-double chi_square_uniform(const std::vector<double>& values, double lo, double hi) {
+double chi_square_uniform(std::vector<double> values, double lo, double hi) {
   const int bins = 10;
   std::vector<double> count(bins, 0.0);
   for (double v : values) {
-    if (v < lo || v > hi) return INFINITY;  // outside mean ± variance
+    // Outside mean ± variance, beyond the float rounding of the particle's components.
+    if (v < lo - 1e-5 * std::abs(lo) || v > hi + 1e-5 * std::abs(hi)) return INFINITY;
+    v = std::clamp(v, lo, hi);
     count[std::min(bins - 1, int((v - lo) / (hi - lo) * bins))] += 1;
   }
   const double expected = double(values.size()) / bins;
@@ -60,6 +63,19 @@ TEST_CASE("ex 5.1: speed, lifetime, size, colour and alpha are each uniform in m
   CHECK(chi_square_uniform(r, 0.3, 0.7) < chi2_limit);
   CHECK(chi_square_uniform(g, 0.1, 0.7) < chi2_limit);
   CHECK(chi_square_uniform(b, 0.5, 0.7) < chi2_limit);
+  // Each attribute has its own draw: one rand reused for all would correlate them fully.
+  const auto correlation = [](const std::vector<double>& x, const std::vector<double>& y) {
+    double mx = 0, my = 0, sxy = 0, sxx = 0, syy = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / double(x.size()), my += y[i] / double(y.size());
+    for (std::size_t i = 0; i < x.size(); ++i)
+      sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx), syy += (y[i] - my) * (y[i] - my);
+    return sxy / std::sqrt(sxx * syy);
+  };
+  const double bound = 5 / std::sqrt(double(speed.size()));
+  for (const auto* other : {&lifetime, &size, &alpha, &r, &g, &b}) CHECK(std::abs(correlation(speed, *other)) < bound);
+  CHECK(std::abs(correlation(lifetime, size)) < bound);
+  CHECK(std::abs(correlation(r, g)) < bound);
+  CHECK(std::abs(correlation(g, b)) < bound);
 }
 
 TEST_CASE("ex 5.1: with no variance every attribute is its mean, and the emitter index is kept",
@@ -129,6 +145,19 @@ TEST_CASE("ex 5.1: each shape places and aims as specified", "[grade][05-sprites
       REQUIRE(p.vy == Approx(2.0).epsilon(1e-5));  // angle 0: along the axis
     }
     CHECK(std::abs(inner - n / 4.0) < 5 * std::sqrt(n * 0.25 * 0.75));
+  }
+  SECTION("disc: directions within angle_deg of the axis, uniform over the cap, wherever it starts") {
+    e.shape = kit::EmitterShape::disc, e.radius = 1.0, e.angle_deg = 40;
+    double mean_cos = 0, worst = 1;
+    for (int k = 0; k < n; ++k) {
+      const kit::ParticleSpawn p = kit::sample_particle(e, 0, random);
+      const double c = p.vy / 2.0;
+      worst = std::min(worst, c);
+      mean_cos += c / n;
+    }
+    const double cos_max = std::cos(40 * M_PI / 180);
+    CHECK(worst >= cos_max - 1e-5);
+    CHECK(mean_cos == Approx((1 + cos_max) / 2).margin(5 * (1 - cos_max) / std::sqrt(12.0 * n)));
   }
   SECTION("sphere: in the ball of radius R, flying radially out, an eighth within R/2") {
     e.shape = kit::EmitterShape::sphere, e.radius = 2.0;

@@ -90,6 +90,8 @@ TEST_CASE("ex 5.2: a death is recorded for a burst exactly when its emitter burs
           "[grade][05-sprites][ex5.2]") {
   kit::Particles ps = make({0.01f, 0.01f, 9, 0.01f});
   ps.emitter[0] = 1, ps.emitter[1] = 0, ps.emitter[2] = 1, ps.emitter[3] = 1;
+  for (std::size_t i = 0; i < ps.size(); ++i)
+    ps.y[i] = 100.f + float(i), ps.z[i] = 200.f + float(i), ps.vx[i] = 300.f + float(i), ps.vz[i] = 400.f + float(i);
   std::vector<kit::Death> deaths;
   const std::vector<bool> bursts{false, true};
   CHECK(kit::age_and_kill(ps, 0.1f, {}, bursts, deaths) == 3);
@@ -97,8 +99,27 @@ TEST_CASE("ex 5.2: a death is recorded for a burst exactly when its emitter burs
   std::vector<float> xs{deaths[0].x, deaths[1].x};
   std::sort(xs.begin(), xs.end());
   CHECK(xs == std::vector<float>{0.f, 3.f});
-  for (const kit::Death& d : deaths) {
+  for (const kit::Death& d : deaths) {  // every field its own, not its neighbour's
+    const std::size_t i = std::size_t(d.x);
     CHECK(d.emitter == 1);
-    CHECK(d.vy == 10 * d.x);  // its own velocity, not its neighbour's
+    CHECK(d.y == 100.f + float(i));
+    CHECK(d.z == 200.f + float(i));
+    CHECK(d.vx == 300.f + float(i));
+    CHECK(d.vy == 10 * d.x);
+    CHECK(d.vz == 400.f + float(i));
   }
+}
+
+TEST_CASE("ex 5.2: on the boundaries: age = lifetime dies; alpha = threshold and a face of the region live",
+          "[grade][05-sprites][ex5.2]") {
+  std::vector<kit::Death> deaths;
+  kit::Particles ps = make({0.5f, 9, 9, 9});
+  ps.age[0] = 0.25f;  // 0.25 + 0.25 = 0.5 exactly: its lifetime is reached
+  ps.alpha[1] = 0.25f;  // exactly the threshold: not below it
+  ps.y[2] = 0.f, ps.x[3] = 10.f;  // on the floor and on the +x face
+  kit::DeathRules rules;
+  rules.alpha_below = 0.25;
+  rules.region = std::array<kit::Vec3d, 2>{kit::Vec3d{-10, 0, -10}, kit::Vec3d{10, 10, 10}};
+  CHECK(kit::age_and_kill(ps, 0.25f, rules, no_bursts, deaths) == 1);
+  CHECK(ids(ps) == std::set<std::uint32_t>{1, 2, 3});
 }

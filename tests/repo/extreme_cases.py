@@ -25,6 +25,12 @@ CASES = [  # (chapter, flags, expected exit code)
     ("03-rk2", ["--stiffness", "1e-6", "--mass", "1e6", "--t-end", "1e4"], 0),
     ("03-rk2", ["--periods", "100000"], 0),
     ("04-adaptive-rk", ["--mu", "10000"], 0),
+    ("05-sprites", ["--max-particles", "1", "--frames", "30"], 0),
+    ("05-sprites", ["--width", "16", "--height", "16", "--frames", "10"], 0),
+    ("05-sprites", ["--scene", "fire-and-smoke", "--fps", "1", "--integrator", "euler", "--frames", "30"], 0),
+    ("05-sprites", ["--scene", str(pathlib.Path(__file__).parent / "sprite_scenes" / "extreme.toml")], 0),
+    ("05-sprites", ["--scene", str(pathlib.Path(__file__).parent / "sprite_scenes" / "extreme.toml"),
+                    "--integrator", "euler", "--width", "7680", "--height", "4320"], 2),  # km-wide sprites: hours
 ]
 
 

@@ -27,6 +27,11 @@ void add_sprite_flags(ChapterApp& app, SpriteFlags& flags);
 /// UsageError for an unknown name (listing the shipped ones) or a bad file (file:line: key).
 SpriteScene load_scene_flag(const SpriteFlags& flags, const std::filesystem::path& scenes_dir);
 
+/// Loads every distinct texture the scene names, so a missing or unreadable PNG is a usage error
+/// (naming the scene file and emitter[i].texture) before anything runs. Returns their bytes, mip
+/// levels included, for the run's estimate.
+double check_textures(const SpriteScene& scene);
+
 /// The run the flags ask for on `scene`, frames written under `frame_dir` (empty: none).
 SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene, const std::filesystem::path& frame_dir);
 

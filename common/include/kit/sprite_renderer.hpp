@@ -2,6 +2,8 @@
 // Draws particles as textured, camera-facing squares (chapter 5; Reeves 1983, Porter & Duff
 // 1984): "over" sprites sorted back to front first, then additive glows, into a linear image.
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include <kit/image.hpp>
@@ -61,7 +63,9 @@ class SpriteRenderer {
   SpriteCamera camera_;
   Vec3d background_;
   std::vector<Blend> blend_of_emitter_;
-  std::vector<std::vector<Texture>> mips_of_emitter_;  // mip_levels of each emitter's texture
+  std::vector<std::vector<Texture>> textures_;         // mip_levels of each distinct texture
+  std::map<std::string, std::size_t> texture_index_;   // texture name or path -> textures_
+  std::vector<std::size_t> texture_of_emitter_;        // emitter -> textures_
   std::vector<Sprite> over_, additive_;                // this frame's sprites, kept for their capacity
   // Per image column of the sprite being drawn: the two texel columns either side of the pixel
   // centre, the weight of the right one, and the fraction of the pixel the square covers.

@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <kit/animation.hpp>
 #include <kit/image.hpp>
 #include <kit/run_estimate.hpp>
 #include <kit/sprite_renderer.hpp>
@@ -28,6 +30,7 @@ struct SpriteRunOptions {
   CompositeOver over = nullptr;     ///< ex 5.3, or nullptr for the renderer's own
   int paths = 24;                   ///< particles whose paths are recorded
   int sheet_frames = 12;            ///< frames kept for the contact sheet, evenly spaced
+  double texture_bytes = 0;         ///< what the emitters' textures take, for the estimate [B]
 };
 
 /// One particle's recorded path, a point per frame it was alive (after that frame's update).
@@ -50,12 +53,26 @@ struct SpriteRecording {
   long diverged_at = -1;            ///< first frame with a non-finite position, or −1
 };
 
-/// Particles alive at steady state, by Little's law: Σ over emitters of mean rate [1/frame] ×
+/// Mean particles each emitter adds a frame at steady state: its rate, or for a burst emitter,
+/// its rate per burst times the deaths a frame of the emitters that burst into it.
+std::vector<double> emissions_per_frame(const SpriteScene& scene);
+/// Particles alive at steady state, by Little's law: Σ over emitters of particles a frame ×
 /// mean lifetime [s] × fps, at most max_particles.
 double expected_alive(const SpriteScene& scene, const SpriteRunOptions& options);
-/// The run's cost: frames as steps; time from the expected particle-steps and pixels; memory
-/// from max_particles and the images kept.
+/// The run's cost: frames as steps; time from the expected particle-steps, emissions, sprites,
+/// sprite pixels (each sprite's size seen from the camera's distance to its emitter) and frame
+/// pixels; memory from max_particles, the images kept and the textures.
 RunEstimate estimate_sprite_run(const SpriteScene& scene, const SpriteRunOptions& options);
+
+/// What a recording's frames become in `out`: contact_sheet.png (the kept frames, 4 a row),
+/// animation.mp4 and .gif (ffmpeg, when installed) and play.gp (a gnuplot player).
+struct AnimationOutputs {
+  std::filesystem::path sheet, player;
+  AnimationResult movie;
+};
+/// Writes them; nothing when no frame was rendered (a run that diverged before its first frame).
+std::optional<AnimationOutputs> write_animation(const SpriteRecording& recording, const SpriteRunOptions& options,
+                                                const std::filesystem::path& out);
 
 /// Runs `scene` for options.frames frames with the student's kernels. Reports one unit of
 /// progress per frame. Stops early, and says so in diverged_at, when a position becomes

@@ -24,8 +24,11 @@ struct DragProblem {
   /// The exact position at time t [s].
   Vec3d exact_position(double t) const;
 };
+/// The longest horizon of the trade [s]: 60 s take 460,000 steps at its smallest Δt.
+inline constexpr double max_trade_horizon = 60.0;
 /// The mean particle of `scene.emitters[0]` (at its position, along its axis at the mean speed),
-/// under the scene's forces (absent ones are zero), for its mean lifetime.
+/// under the scene's forces (absent ones are zero), for its mean lifetime (at most
+/// max_trade_horizon).
 DragProblem mean_particle(const SpriteScene& scene);
 
 /// One run of the trade: n = round(t_end/Δt) steps, error |x_n − x(n·Δt)|.
@@ -38,6 +41,10 @@ struct TradeRun {
 };
 /// `integrator` on `problem` at each of `dts`.
 std::vector<TradeRun> trade_runs(const DragProblem& problem, Integrator integrator, const std::vector<double>& dts);
+
+/// An error below this is round-off, not the integrator's truncation: 100 × ε × steps × the
+/// position's size, in [m]. Orders are fitted above it only.
+double trade_roundoff(const TradeRun& run);
 
 /// Δt = 1/15 s down to 1/3840 s, halving: frame rates from a slow preview to 128 substeps at 30 fps.
 std::vector<double> trade_steps();
