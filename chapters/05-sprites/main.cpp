@@ -120,8 +120,8 @@ int main(int argc, char** argv) {
     const fs::path frames = render ? fs::path(app.options().out_dir) / "frames" : fs::path();
     const auto run = kit::run_options(flags, scene, frames);
     kit::announce_run(app.report(), "animation", "The animation", kit::estimate_sprite_run(scene, run),
-                      fmt::format("--frames {}, --max-particles {}, --width {}, --height {}", run.frames,
-                                  run.max_particles, run.width, run.height),
+                      fmt::format("--frames {}, --fps {}, --max-particles {}, --width {}, --height {}",
+                                  run.frames, run.fps, run.max_particles, run.width, run.height),
                       {.max_bytes = kit::machine_memory()});
     app.summary()["scene"] = {{"name", scene.name}, {"file", scene.file}, {"frames", run.frames},
                               {"fps", run.fps}, {"max_particles", run.max_particles},

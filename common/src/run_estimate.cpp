@@ -19,7 +19,7 @@ std::string describe_bytes(double bytes) {
 }
 
 std::string describe(const RunEstimate& e) {
-  return fmt::format("about {:.2g} steps: {} and {}", e.steps, about_seconds(e.seconds()),
+  return fmt::format("about {:.2g} {}: {} and {}", e.steps, e.unit, about_seconds(e.seconds()),
                      describe_bytes(e.bytes));
 }
 
@@ -31,8 +31,8 @@ void announce_run(Report& report, std::string_view section, std::string_view wha
                   std::string_view flags, const RunLimits& limits) {
   if (over_limits(e, limits))
     throw UsageError(fmt::format("{} ({}) takes {}, over the limit of {} and {}: choose values that ask for "
-                                 "fewer steps", what, flags, describe(e), describe_seconds(limits.max_seconds),
-                                 describe_bytes(limits.max_bytes)));
+                                 "fewer {}", what, flags, describe(e), describe_seconds(limits.max_seconds),
+                                 describe_bytes(limits.max_bytes), e.unit));
   const bool announced = e.seconds() >= limits.announce_seconds || e.bytes >= limits.announce_bytes;
   const std::string place = std::string(section) + "/estimate";
   const std::vector<Field> fields{{"steps", e.steps}, {"seconds", e.seconds()}, {"bytes", e.bytes},

@@ -74,6 +74,7 @@ RunEstimate estimate_sprite_run(const SpriteScene& scene, const SpriteRunOptions
   RunEstimate estimate;
   const double frames = double(options.frames + options.warmup_frames);
   estimate.steps = frames;
+  estimate.unit = "frames";
   const double render_share = double(options.frames) / frames;
   estimate.seconds_per_step = alive * seconds_per_particle_step + emitted * seconds_per_emission +
       (render ? (alive * seconds_per_sprite + blended * seconds_per_blend + pixels * seconds_per_pixel) * render_share

@@ -20,6 +20,7 @@ struct RunEstimate {
   double bytes = 0;             ///< peak memory of what the run keeps [B]
   double work = 0;              ///< the progress line's total, when its units are not steps
                                 ///< (steps weighted by their cost, progress.hpp); 0: steps
+  std::string unit = "steps";   ///< what `steps` counts, in the text ("frames" for an animation)
   double seconds() const { return steps * seconds_per_step; }
 };
 
