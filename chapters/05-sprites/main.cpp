@@ -10,6 +10,7 @@
 
 #include <kit/animation.hpp>
 #include <kit/chapter_app.hpp>
+#include <kit/emission_check.hpp>
 #include <kit/measure.hpp>
 #include <kit/sprite_figures.hpp>
 #include <kit/sprite_flags.hpp>
@@ -49,13 +50,26 @@ void falls_under_gravity(kit::ChapterApp& app, const kit::SpriteScene& scene,
   app.figure(kit::trade_figure(curves, camera, run.fps, scene.name));
 }
 
-// 2. "Durée de vie limitée": the scene runs; every particle dies at the end of its life, or
+// 2. Reeves's emission as ex 5.1 draws it: each attribute's mean and half-width over 20000 draws.
+void emits(kit::ChapterApp& app, const kit::SpriteScene& scene, std::uint64_t seed) {
+  const auto draws = kit::measure_emission(scene.emitters[0], &kit::sample_particle, seed);
+  app.report().print(fmt::format("2. Emitter '{}', 20000 particles drawn by your sample_particle:\n",
+                                 scene.emitters[0].name));
+  auto table = app.report().table("emission", {{"attribute", "attribute"}, {"scene mean", "mean", "{:.4g}"},
+      {"± variance", "variance", "{:.4g}"}, {"drawn mean", "drawn_mean", "{:.4g}"},
+      {"drawn ± sqrt(3 var)", "drawn_half_width", "{:.4g}"}});
+  for (const auto& a : draws) table.row({a.name, a.mean, a.half_width, a.drawn_mean, a.drawn_half_width});
+  table.print();
+  app.report().print("\n");
+}
+
+// 3. "Durée de vie limitée": the scene runs; every particle dies at the end of its life, or
 //    sooner by the scene's rules, and alive = emitted − dead after every frame.
 kit::SpriteRecording lives_and_dies(kit::ChapterApp& app, const kit::SpriteScene& scene,
                                     const kit::SpriteRunOptions& run) {
   const kit::SpriteRecording rec = kit::run_sprite_scene(scene, run, kit::student_kernels(scene.emitters[0]));
   const kit::SpriteTotals& t = rec.totals;
-  app.report().say("counts", "2. {frames} frames of '{scene}' with {integrator}: emitted {emitted}, "
+  app.report().say("counts", "3. {frames} frames of '{scene}' with {integrator}: emitted {emitted}, "
                    "dead {dead}, alive {alive} = emitted - dead; at most {peak} alive, {dropped} not emitted "
                    "(--max-particles {max}).\n", {{"frames", long(rec.frames.size())}, {"scene", scene.name},
                    {"integrator", std::string(kit::display_name(run.integrator))}, {"emitted", t.emitted},
@@ -75,11 +89,11 @@ kit::SpriteRecording lives_and_dies(kit::ChapterApp& app, const kit::SpriteScene
   return rec;
 }
 
-// 3. "Plaque une texture transparente animée": the frames as a contact sheet and an animation.
+// 4. "Plaque une texture transparente animée": the frames as a contact sheet and an animation.
 void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
                       const kit::SpriteRunOptions& run) {
   const fs::path out = app.options().out_dir;
-  app.report().say("frames", "3. {count} frames ({width}x{height}) in {dir}; {drawn} sprites drawn, "
+  app.report().say("frames", "4. {count} frames ({width}x{height}) in {dir}; {drawn} sprites drawn, "
                    "{culled} culled, {pixels} pixels blended.\n", {{"count", long(rec.frame_files.size())},
                    {"width", long(run.width)}, {"height", long(run.height)}, {"dir", run.frame_dir.string()},
                    {"drawn", rec.render.sprites_drawn}, {"culled", rec.render.sprites_culled},
@@ -101,9 +115,9 @@ void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
   if (app.options().show) app.report().print(kit::show_player(made->player) + "\n");
 }
 
-// 4. "On peut afficher la trajectoire": a sample of paths, coloured by age.
+// 5. "On peut afficher la trajectoire": a sample of paths, coloured by age.
 void trajectories(kit::ChapterApp& app, const kit::SpriteRecording& rec, const kit::SpriteScene& scene) {
-  app.report().say("paths", "4. Paths of {count} particles, side view, coloured by age.\n",
+  app.report().say("paths", "5. Paths of {count} particles, side view, coloured by age.\n",
                    {{"count", long(rec.paths.size())}});
   app.figure(kit::paths_figure(rec, scene.name));
 }
@@ -118,21 +132,18 @@ int main(int argc, char** argv) {
     const kit::SpriteScene scene = kit::load_scene_flag(flags, fs::path(KIT_CHAPTER_SOURCE_DIR) / "scenes");
     const bool render = !app.options().no_plot;
     const fs::path frames = render ? fs::path(app.options().out_dir) / "frames" : fs::path();
-    const auto run = kit::run_options(flags, scene, frames);
+    auto run = kit::run_options(flags, scene, frames);
     kit::announce_run(app.report(), "animation", "The animation", kit::estimate_sprite_run(scene, run),
                       fmt::format("--frames {}, --fps {}, --max-particles {}, --width {}, --height {}",
                                   run.frames, run.fps, run.max_particles, run.width, run.height),
                       {.max_bytes = kit::machine_memory()});
-    app.summary()["scene"] = {{"name", scene.name}, {"file", scene.file}, {"frames", run.frames},
-                              {"fps", run.fps}, {"max_particles", run.max_particles},
-                              {"integrator", flags.integrator}, {"warmup_frames", run.warmup_frames}};
+    app.summary()["scene"] = kit::run_summary(scene, run, flags);
     app.section("the integrators", [&] { falls_under_gravity(app, scene, run); });
-    const kit::CompositeOver over = render ? kit::student_over(app.report()) : nullptr;
+    app.section("the emission", [&] { emits(app, scene, run.seed); });
+    run.over = render ? kit::student_over(app.report()) : nullptr;
     app.section("the scene", [&] {
-      auto with_over = run;
-      with_over.over = over;
-      const kit::SpriteRecording rec = lives_and_dies(app, scene, with_over);
-      if (render) animated_texture(app, rec, with_over);
+      const kit::SpriteRecording rec = lives_and_dies(app, scene, run);
+      if (render) animated_texture(app, rec, run);
       trajectories(app, rec, scene);
     });
   });

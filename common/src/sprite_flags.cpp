@@ -85,6 +85,12 @@ SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene,
   return o;
 }
 
+nlohmann::json run_summary(const SpriteScene& scene, const SpriteRunOptions& run, const SpriteFlags& flags) {
+  return {{"name", scene.name}, {"file", scene.file}, {"frames", run.frames}, {"fps", run.fps},
+          {"max_particles", run.max_particles}, {"integrator", flags.integrator},
+          {"warmup_frames", run.warmup_frames}};
+}
+
 double machine_memory() {
   return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
 }

@@ -98,6 +98,18 @@ TEST_CASE("chapter 5: the integrators reach the closed form at orders 1, 1, 2; t
   CHECK(double(rows["euler"]["pixels_at_fps"]) > 5);       // Euler: visibly off
 }
 
+TEST_CASE("chapter 5: ex 5.1's draws have the scene's means and half-widths (uniform: half-width = sqrt(3 var))") {
+  const json rows = run_chapter({"--frames", "1"})["emission"];
+  REQUIRE(rows.size() == 4);
+  for (const json& row : rows) {
+    INFO(row.dump());
+    CHECK(double(row["drawn_mean"]) == Approx(double(row["mean"])).epsilon(0.01));
+    CHECK(double(row["drawn_half_width"]) == Approx(double(row["variance"])).epsilon(0.03));
+  }
+  CHECK(rows[0]["attribute"] == "speed [m/s]");
+  CHECK(rows[0]["mean"] == 6.0);
+}
+
 TEST_CASE("chapter 5: alive = emitted − dead, and a full store refuses emissions and counts them") {
   const json s = run_chapter({"--frames", "90"});
   const json& c = s["counts"];

@@ -107,6 +107,9 @@ def expectations(tree):
                 ("the integrators priced against the closed form (kit code, no exercise)",
                  lambda s: near(s["integrators"]["midpoint"]["fitted_order"], 2, 0.05)),
                 ("the scene waits for ex 5.2 (emission alone cannot run it)", lambda s: "counts" not in s),
+                ("the student's emission (ex 5.1) measured against the fountain's spreads",
+                 lambda s: near(s["emission"][0]["drawn_mean"], 6, 0.1)
+                 and near(s["emission"][0]["drawn_half_width"], 0.6, 0.05)),
             ],
         }
     if tree == "none":
@@ -141,8 +144,9 @@ def expectations(tree):
              lambda s: "Cash-Karp 5(4) (kit)" in s["work_precision"]),
         ],
         "05-sprites": [
-            ("the scene waits for ex 5.1; the student's over compositing (ex 5.3) is taken",
-             lambda s: "counts" not in s and not any("5.3" in e["reason"] for e in s.get("skipped", []))),
+            ("the emission and the scene wait for ex 5.1; the student's over compositing (ex 5.3) is taken",
+             lambda s: "counts" not in s and "emission" not in s
+             and not any("5.3" in e["reason"] for e in s.get("skipped", []))),
         ],
     }
 
