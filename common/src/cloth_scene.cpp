@@ -1,5 +1,7 @@
 // placeholder until the scene-file branch lands
 #include <kit/cloth_scene.hpp>
+#include <algorithm>
+#include <cmath>
 namespace kit {
 long pinned_node(const ClothGrid& grid, const Pin& pin) {
   return grid.index(pin.i < 0 ? grid.nx + pin.i : pin.i, pin.j < 0 ? grid.ny + pin.j : pin.j);
@@ -14,5 +16,14 @@ const char* display_name(ClothIntegrator i) {
 }
 const std::optional<SpringFamily>& SpringLayout::family(SpringKind kind) const {
   return kind == SpringKind::structural ? structural : kind == SpringKind::shear ? shear : bend;
+}
+}
+namespace kit {
+int stages(ClothIntegrator i) { return i == ClothIntegrator::midpoint ? 2 : i == ClothIntegrator::rk4 ? 4 : 1; }
+ClothScene at_resolution(const ClothScene& scene, int n) {
+  ClothScene s = scene;
+  s.grid.nx = n;
+  s.grid.ny = std::max(2, int(std::lround((n - 1) * scene.grid.height / scene.grid.width)) + 1);
+  return s;
 }
 }

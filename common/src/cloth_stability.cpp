@@ -6,6 +6,8 @@
 #include <complex>
 #include <random>
 
+#include <fmt/format.h>
+
 namespace kit {
 
 namespace {
@@ -131,6 +133,53 @@ MeasuredDtMax measure_dt_max(const ClothScene& scene, const Springs& springs, Cl
   }
   result.stable = lo, result.unstable = hi;
   return result;
+}
+
+ClothScene springs_only(const ClothScene& scene) {
+  ClothScene bare = scene;
+  bare.gravity.reset(), bare.drag.reset(), bare.ground.reset(), bare.strain_limit.reset();
+  bare.spheres.clear();
+  return bare;
+}
+
+StabilityAtResolution stability_at(const ClothScene& scene, int n, ClothKernels kernels,
+                                   ClothIntegrator integrator, double damping_time) {
+  const ClothScene bare = springs_only(at_resolution(scene, n));
+  const Springs springs = kernels.build_springs(bare.grid, bare.springs);
+  const ClothSystem rest(bare, springs, kernels);
+  StabilityAtResolution r;
+  r.n = n;
+  r.springs = long(springs.size());
+  r.omega_max = omega_max(springs, rest.masses(), rest.x, rest.pins()).omega;
+  r.predicted = predicted_dt_max(integrator, r.omega_max, damping_time);
+  // Bracket around the prediction, or around symplectic Euler's 2/ω when there is none.
+  const double guess = r.predicted > 0 ? r.predicted : 2 / r.omega_max;
+  r.measured = measure_dt_max(bare, springs, kernels, integrator, 0.05 * guess, 4 * guess);
+  if (r.measured.estimate() > 0)
+    r.spring_evaluations_per_second = double(r.springs) * stages(integrator) / (0.9 * r.measured.estimate());
+  return r;
+}
+
+std::vector<StabilityCase> stability_cases(const ClothScene& scene, int n, ClothKernels kernels, double damping_time) {
+  const double k = scene.springs.structural ? scene.springs.structural->stiffness : 1000.0;
+  std::vector<StabilityCase> cases;
+  const auto run = [&](const std::string& name, int families, ClothIntegrator integrator, double c) {
+    ClothScene variant = scene;
+    variant.springs = SpringLayout{};
+    variant.springs.bend_layout = scene.springs.bend_layout;
+    const SpringFamily family{k, c * k};
+    variant.springs.structural = family;
+    if (families >= 2) variant.springs.shear = family;
+    if (families >= 3) variant.springs.bend = family;
+    cases.push_back({name, integrator, c, stability_at(variant, n, kernels, integrator, c)});
+  };
+  const char* names[] = {"structural", "+ shear", "+ shear + bend"};
+  for (int families = 1; families <= 3; ++families)
+    for (ClothIntegrator integrator : {ClothIntegrator::symplectic_euler, ClothIntegrator::rk4})
+      run(names[families - 1], families, integrator, 0);
+  for (ClothIntegrator integrator : all_cloth_integrators)
+    run(fmt::format("all three, μ = {:.2g} s·k", damping_time), 3, integrator, damping_time);
+  return cases;
 }
 
 }  // namespace kit

@@ -3,6 +3,7 @@
 // prediction from the stiffest mode, ω_max² = the largest eigenvalue of M⁻¹K at rest (power
 // iteration), and the largest Δt measured by bisection on runs that grow or stay bounded.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <kit/cloth.hpp>
@@ -45,5 +46,35 @@ struct MeasuredDtMax {
 MeasuredDtMax measure_dt_max(const ClothScene& scene, const Springs& springs, ClothKernels kernels,
                              ClothIntegrator integrator, double lo, double hi, long steps = 2000,
                              double relative = 0.005);
+
+/// The scene's sheet, springs and pins alone: no gravity, drag, collider or strain limit, so
+/// that the only motion is the springs' (the linearisation the prediction is made on).
+ClothScene springs_only(const ClothScene& scene);
+
+/// Δt_max of one integrator on the scene's sheet at resolution n: the prediction from ω_max at
+/// rest and the measurement, with the spring-force evaluations one simulated second costs at
+/// 0.9 Δt_max (the explicit cost, ∝ N³ for a fixed sheet).
+struct StabilityAtResolution {
+  int n = 0;
+  long springs = 0;
+  double omega_max = 0;   ///< [rad/s]
+  double predicted = 0;   ///< [s]
+  MeasuredDtMax measured;
+  double spring_evaluations_per_second = 0;  ///< per simulated second at 0.9 × measured Δt_max
+};
+StabilityAtResolution stability_at(const ClothScene& scene, int n, ClothKernels kernels,
+                                   ClothIntegrator integrator, double damping_time = 0);
+
+/// The stability table of chapter 6 on the scene's sheet at n nodes across, all springs at the
+/// scene's structural stiffness: undamped, symplectic Euler and RK4 on three layouts
+/// (structural; + shear; + shear + bend); then damped along the springs, μ = damping_time·k,
+/// with all four integrators on the full layout.
+struct StabilityCase {
+  std::string layout;
+  ClothIntegrator integrator;
+  double damping_time = 0;  ///< [s]
+  StabilityAtResolution result;
+};
+std::vector<StabilityCase> stability_cases(const ClothScene& scene, int n, ClothKernels kernels, double damping_time);
 
 }  // namespace kit

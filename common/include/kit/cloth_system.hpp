@@ -17,7 +17,9 @@ using SymplecticClothStep = void (*)(NodeArray& x, NodeArray& v, const Eigen::Ve
                                      const std::vector<std::int32_t>& pins, const ClothForces& forces, NodeArray& f,
                                      double dt);
 using SphereResponse = long (*)(NodeArray& x, NodeArray& v, const SphereCollider& sphere);
+using SpringBuilder = Springs (*)(const ClothGrid& grid, const SpringLayout& layout);
 struct ClothKernels {
+  SpringBuilder build_springs = nullptr;          ///< ex 6.2, for experiments that build many cloths
   SymplecticClothStep symplectic_step = nullptr;  ///< needed by ClothIntegrator::symplectic_euler
   SphereResponse collide_sphere = nullptr;        ///< needed when the scene has spheres
 };

@@ -1,0 +1,55 @@
+#pragma once
+// A cloth scene run from start to end (chapter 6): its energy and strain sampled over time, its
+// positions at the frame times, what was computed, and whether and when it exploded. A diverging
+// run is a result: it stops at the first sign and says when.
+#include <vector>
+
+#include <kit/cloth_system.hpp>
+#include <kit/run_estimate.hpp>
+
+namespace kit {
+
+struct ClothRunOptions {
+  ClothIntegrator integrator = ClothIntegrator::symplectic_euler;
+  double dt = 1e-4;        ///< [s]
+  double t_end = 1;        ///< [s]
+  int frames = 0;          ///< positions kept at t = k·t_end/frames, k = 0 … frames (0: none)
+  int samples = 400;       ///< energy and strain samples over [0, t_end]
+  bool strain_limit = true;  ///< false: the scene's strain limit is switched off for this run
+};
+
+struct ClothSample {
+  double t = 0;          ///< [s]
+  double kinetic = 0;    ///< [J]
+  double potential = 0;  ///< springs and gravity [J]
+  double strain = 0;     ///< largest structural stretch (l − L0)/L0
+  double total() const { return kinetic + potential; }
+};
+
+struct ClothRecording {
+  std::vector<ClothSample> samples;
+  std::vector<NodeArray> frames;  ///< positions at the frame times, while the cloth holds
+  long steps = 0;
+  double exploded_at = -1;        ///< [s]: when the cloth blew up (< 0: it never did)
+  double peak_strain = 0;         ///< largest structural stretch over the run
+  double deepest = 0;             ///< deepest a node ever sat inside a collider after a step [m]
+  ClothWork work;
+};
+
+/// A cloth has exploded once a coordinate is not finite or a structural spring is stretched
+/// beyond this many times its rest length minus one (1000%).
+inline constexpr double exploded_strain = 10.0;
+
+/// Runs `scene` with `springs` (ex 6.2) and `kernels` (ex 6.3, 6.4) as `options` say. Reports
+/// one unit of progress per step.
+ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothKernels kernels,
+                         const ClothRunOptions& options);
+
+/// What a run costs before it starts: steps, and the memory of the state, springs and frames.
+/// `stage_ns` is a conservative cost of one spring in one force evaluation [ns].
+RunEstimate estimate_cloth_run(const ClothScene& scene, const ClothRunOptions& options, double stage_ns = 6.0);
+
+/// The deepest any node of x lies inside the scene's ground or spheres [m] (0: none inside).
+double deepest_penetration(const ClothScene& scene, const NodeArray& x);
+
+}  // namespace kit

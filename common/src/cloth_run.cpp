@@ -1,0 +1,77 @@
+// A cloth scene run from start to end (cloth_run.hpp).
+#include <kit/cloth_run.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include <kit/progress.hpp>
+
+namespace kit {
+
+double deepest_penetration(const ClothScene& scene, const NodeArray& x) {
+  double deepest = 0;
+  if (scene.ground) deepest = std::max(deepest, scene.ground->height - x.col(1).minCoeff());
+  for (const SphereCollider& sphere : scene.spheres)
+    for (Eigen::Index i = 0; i < x.rows(); ++i)
+      deepest = std::max(deepest, sphere.radius - (x.row(i).transpose() - sphere.center).norm());
+  return deepest;
+}
+
+ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothKernels kernels,
+                         const ClothRunOptions& options) {
+  ClothScene run_scene = scene;
+  if (!options.strain_limit) run_scene.strain_limit.reset();
+  ClothSystem cloth(run_scene, springs, kernels);
+  ClothRecording rec;
+  // The step count is rounded to the nearest whole number of steps; samples and frames fall at
+  // the step nearest their time.
+  const long steps = std::max(1L, std::lround(options.t_end / options.dt));
+  const auto sample = [&] {
+    const double strain = cloth.max_strain();
+    rec.samples.push_back({cloth.t, cloth.kinetic(), cloth.potential(), strain});
+    rec.peak_strain = std::max(rec.peak_strain, strain);
+  };
+  // Sample s of `count` falls at the step nearest s·t_end/count; when there are more samples
+  // than steps, a step takes the samples that fall on it once.
+  struct Schedule {
+    long count, steps, next = 1;
+    bool due(long k) {
+      bool hit = false;
+      while (next <= count && std::lround(double(next) * double(steps) / double(count)) <= k) ++next, hit = true;
+      return hit;
+    }
+  };
+  Schedule samples{options.samples, steps}, frames{options.frames, steps};
+  sample();
+  if (options.frames > 0) rec.frames.push_back(cloth.x);
+  ProgressCounter progress;
+  for (long k = 1; k <= steps; ++k) {
+    cloth.step(options.integrator, options.dt);
+    ++rec.steps;
+    progress.add(1);
+    const bool exploded = cloth.blew_up() || cloth.max_strain() > exploded_strain;
+    if (exploded) {
+      rec.exploded_at = cloth.t;
+      break;
+    }
+    rec.deepest = std::max(rec.deepest, deepest_penetration(run_scene, cloth.x));
+    if (samples.due(k)) sample();
+    if (frames.due(k)) rec.frames.push_back(cloth.x);
+  }
+  rec.work = cloth.work;
+  return rec;
+}
+
+RunEstimate estimate_cloth_run(const ClothScene& scene, const ClothRunOptions& options, double stage_ns) {
+  RunEstimate e;
+  const double nodes = double(scene.grid.nodes());
+  const double springs = double(spring_count(scene.grid.nx, scene.grid.ny, scene.springs));
+  e.steps = std::max(1.0, std::round(options.t_end / options.dt));
+  e.seconds_per_step = springs * stages(options.integrator) * stage_ns * 1e-9 + nodes * 20e-9;
+  // State, masses and 11 scratch arrays of 3 doubles a node; 37 bytes a spring in the list and
+  // 24 more in the force pass's copy; the kept frames, 24 bytes a node each.
+  e.bytes = nodes * (13 * 24 + 16) + springs * 61 + double(options.frames + 1) * nodes * 24;
+  return e;
+}
+
+}  // namespace kit

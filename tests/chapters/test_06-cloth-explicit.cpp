@@ -1,0 +1,203 @@
+// Chapter 6 end to end and in process: the force pass conserves momentum and derives from the
+// spring energy, a pinned sheet at rest stays at rest, ω_max matches the anchors' table, the
+// measured Δt_max matches c/ω_max and the 1/N law, colliders hold, absent components cost
+// nothing, the chapter's printed numbers are the ones checked here, bad input exits 2.
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <kit/cloth_mesh_dependence.hpp>
+#include <kit/cloth_run.hpp>
+#include <kit/cloth_scene_file.hpp>
+#include <kit/cloth_stability.hpp>
+#include <kit/obj_mesh.hpp>
+
+#include "cloth_kernels.hpp"
+#include "process.hpp"
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+const std::string binary = KIT_CHAPTER_BINARY;
+const fs::path scenes = fs::path(KIT_CHAPTER_SOURCE_DIR) / "scenes";
+
+json run_chapter(std::vector<std::string> args, const fs::path& out) {
+  args.insert(args.end(), {"--json", "--out", out.string()});
+  const auto result = kit::test::run_process(binary, args);
+  INFO(result.err);
+  REQUIRE(result.exit_code == 0);
+  return json::parse(result.out);
+}
+
+kit::ClothScene square_sheet(int n, bool shear, bool bend) {
+  kit::ClothScene scene;
+  scene.grid.nx = scene.grid.ny = n;
+  scene.grid.width = scene.grid.height = 1;
+  scene.grid.areal_density = 0.1;
+  scene.springs.structural = kit::SpringFamily{1000, 0};
+  if (shear) scene.springs.shear = kit::SpringFamily{1000, 0};
+  if (bend) scene.springs.bend = kit::SpringFamily{1000, 0};
+  return scene;
+}
+}  // namespace
+
+TEST_CASE("cloth: spring forces sum to zero and are minus the gradient of the spring energy", "[cloth]") {
+  kit::ClothScene scene = square_sheet(7, true, true);
+  scene.springs.bend_layout = kit::BendLayout::eight;
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  const kit::ClothForces forces(springs, scene.grid.node_masses(), std::nullopt, std::nullopt);
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> jitter(-0.03, 0.03);
+  kit::NodeArray x = scene.grid.rest_positions(), v = kit::NodeArray::Zero(x.rows(), 3), f;
+  for (Eigen::Index i = 0; i < x.rows(); ++i)
+    for (int axis = 0; axis < 3; ++axis) x(i, axis) += jitter(random);
+  forces(x, v, f);
+  const double scale = f.cwiseAbs().maxCoeff();
+  CHECK(scale > 1);
+  CHECK(f.colwise().sum().norm() < 1e-12 * scale * double(x.rows()));  // momentum is conserved
+  const double h = 1e-6;
+  for (Eigen::Index i : {0L, 9L, 24L, 48L})
+    for (int axis = 0; axis < 3; ++axis) {
+      kit::NodeArray plus = x, minus = x;
+      plus(i, axis) += h, minus(i, axis) -= h;
+      const double gradient = (forces.potential_energy(plus) - forces.potential_energy(minus)) / (2 * h);
+      CHECK(f(i, axis) == Approx(-gradient).margin(1e-6 * scale));
+    }
+}
+
+TEST_CASE("cloth: the vectorised force pass equals the spring-by-spring sum of ex 6.1", "[cloth]") {
+  kit::ClothScene scene = square_sheet(9, true, true);
+  scene.springs.structural->damping = 0.3, scene.springs.shear->damping = 0.2, scene.springs.bend->damping = 0.1;
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  const kit::ClothForces forces(springs, scene.grid.node_masses(), kit::Vector3(0, -9.81, 0), 0.5);
+  std::mt19937_64 random(4);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  kit::NodeArray x = scene.grid.rest_positions(), v(x.rows(), 3), f;
+  for (Eigen::Index i = 0; i < x.rows(); ++i)
+    for (int axis = 0; axis < 3; ++axis) x(i, axis) += jitter(random), v(i, axis) = 50 * jitter(random);
+  forces(x, v, f);
+  kit::NodeArray expected(x.rows(), 3);
+  for (Eigen::Index i = 0; i < x.rows(); ++i)
+    expected.row(i) = forces.masses()[i] * (kit::Vector3(0, -9.81, 0) - 0.5 * v.row(i).transpose()).transpose();
+  for (std::size_t s = 0; s < springs.size(); ++s) {
+    const auto a = springs.a[s], b = springs.b[s];
+    const kit::Vector3 fa = kit::spring_force(x.row(a), x.row(b), v.row(a), v.row(b), springs.rest[s],
+                                              {springs.stiffness[s], springs.damping[s]});
+    expected.row(a) += fa.transpose(), expected.row(b) -= fa.transpose();
+  }
+  CHECK((f - expected).cwiseAbs().maxCoeff() < 1e-12 * expected.cwiseAbs().maxCoeff());
+}
+
+TEST_CASE("cloth: a pinned sheet at rest with no gravity stays at rest to round-off, for every integrator", "[cloth]") {
+  kit::ClothScene scene = square_sheet(12, true, true);
+  scene.pins = {{0, 0}, {-1, 0}, {5, -1}};
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  for (kit::ClothIntegrator integrator : kit::all_cloth_integrators) {
+    kit::ClothSystem cloth(scene, springs, kit::student_cloth_kernels());
+    const kit::NodeArray rest = cloth.x;
+    for (int k = 0; k < 2000; ++k) cloth.step(integrator, 1e-4);
+    INFO(kit::display_name(integrator));
+    CHECK((cloth.x - rest).cwiseAbs().maxCoeff() < 1e-14);
+    CHECK(cloth.v.cwiseAbs().maxCoeff() < 1e-12);
+  }
+}
+
+TEST_CASE("cloth: ω_max² from power iteration matches the anchors' table (equal masses, free edges)", "[cloth]") {
+  // ANCHORS, "Cloth grid, linearised at rest": λ_max(M⁻¹K) in units of k/m.
+  const double table[2][3] = {{3.90, 7.72, 9.59}, {3.99, 7.97, 10.06}};
+  for (int size : {0, 1}) {
+    const int n = size ? 30 : 10;
+    for (int families = 1; families <= 3; ++families) {
+      kit::ClothScene scene = square_sheet(n, families >= 2, families >= 3);
+      const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+      const auto result = kit::omega_max(springs, Eigen::VectorXd::Constant(scene.grid.nodes(), 1000.0),
+                                         scene.grid.rest_positions(), {});
+      INFO(n << "×" << n << ", " << families << " families, " << result.iterations << " iterations");
+      CHECK(result.omega * result.omega == Approx(table[size][families - 1]).margin(0.006));
+    }
+  }
+}
+
+TEST_CASE("cloth: symplectic Euler's measured Δt_max is within 10% of 2/ω_max for three layouts", "[cloth]") {
+  const auto kernels = kit::student_cloth_kernels();
+  for (int families = 1; families <= 3; ++families) {
+    const auto r = kit::stability_at(square_sheet(16, families >= 2, families >= 3), 16, kernels,
+                                     kit::ClothIntegrator::symplectic_euler);
+    INFO(families << " families: predicted " << r.predicted << " s, measured " << r.measured.estimate() << " s");
+    CHECK(r.predicted == Approx(2 / r.omega_max).epsilon(1e-9));
+    CHECK(r.measured.estimate() == Approx(r.predicted).epsilon(0.10));
+  }
+}
+
+TEST_CASE("cloth: Δt_max falls like 1/N within 15% across N = 16, 32, 64", "[cloth]") {
+  const auto kernels = kit::student_cloth_kernels();
+  kit::ClothScene scene = square_sheet(16, true, true);
+  scene.pins = {{0, -1}, {-1, -1}};
+  std::vector<double> n_dt;
+  for (int n : {16, 32, 64})
+    n_dt.push_back((n - 1) * kit::stability_at(scene, n, kernels, kit::ClothIntegrator::symplectic_euler).measured.estimate());
+  CHECK(n_dt[1] == Approx(n_dt[0]).epsilon(0.15));
+  CHECK(n_dt[2] == Approx(n_dt[0]).epsilon(0.15));
+}
+
+TEST_CASE("cloth: the predictions of the four integrators, undamped and damped, against the closed forms", "[cloth]") {
+  using I = kit::ClothIntegrator;
+  CHECK(kit::predicted_dt_max(I::symplectic_euler, 100) == Approx(0.02).epsilon(1e-6));
+  CHECK(kit::predicted_dt_max(I::rk4, 100) == Approx(2 * std::sqrt(2.0) / 100).epsilon(1e-6));
+  CHECK(kit::predicted_dt_max(I::explicit_euler, 100) == 0);
+  CHECK(kit::predicted_dt_max(I::midpoint, 100) == 0);
+  // Damped, every mode underdamped (c ω_max = 0.1 < 2): explicit Euler needs Δt < c (ANCHORS).
+  CHECK(kit::predicted_dt_max(I::explicit_euler, 100, 1e-3) == Approx(1e-3).epsilon(1e-3));
+}
+
+TEST_CASE("cloth: the drape keeps every node out of the sphere and above the ground", "[cloth]") {
+  const kit::ClothScene scene = kit::load_cloth_scene(scenes / "drape.toml");
+  const auto kernels = kit::student_cloth_kernels();
+  const kit::Springs springs = kernels.build_springs(scene.grid, scene.springs);
+  kit::ClothRunOptions run{scene.integrator, scene.dt, std::min(scene.t_end, 1.5), 0, 50, true};
+  const kit::ClothRecording rec = kit::run_cloth(scene, springs, kernels, run);
+  CHECK(rec.exploded_at < 0);
+  CHECK(rec.work.contacts > 0);
+  CHECK(rec.deepest < 1e-9);
+}
+
+TEST_CASE("cloth: what a scene does not list is neither built nor computed", "[cloth]") {
+  kit::ClothScene scene = square_sheet(8, false, false);  // structural only, no gravity, no drag
+  const auto kernels = kit::student_cloth_kernels();
+  const kit::Springs springs = kernels.build_springs(scene.grid, scene.springs);
+  CHECK(springs.count(kit::SpringKind::shear) == 0);
+  CHECK(springs.count(kit::SpringKind::bend) == 0);
+  kit::ClothSystem bare(scene, springs, kernels);
+  for (int k = 0; k < 10; ++k) bare.step(kit::ClothIntegrator::rk4, 1e-4);
+  CHECK(bare.work.force_passes == 40);
+  CHECK(bare.work.spring_terms == 40 * long(springs.size()));
+  CHECK(bare.work.spring_terms_by_kind[int(kit::SpringKind::bend)] == 0);
+  CHECK(bare.work.gravity_terms + bare.work.drag_terms + bare.work.sphere_tests + bare.work.ground_tests == 0);
+  CHECK(bare.work.strain_passes == 0);
+  scene.gravity = kit::Vector3(0, -9.81, 0), scene.ground = kit::GroundCollider{-1, 0};
+  kit::ClothSystem full(scene, springs, kernels);
+  full.step(kit::ClothIntegrator::symplectic_euler, 1e-4);
+  CHECK(full.work.gravity_terms == scene.grid.nodes());
+  CHECK(full.work.ground_tests == scene.grid.nodes());
+  CHECK(full.work.sphere_tests == 0);
+}
+
+TEST_CASE("cloth: just below Δt_max the flag hangs; just above it, it explodes", "[cloth]") {
+  kit::ClothScene scene = kit::load_cloth_scene(scenes / "flag.toml");
+  scene.strain_limit.reset(), scene.drag.reset();
+  auto kernels = kit::student_cloth_kernels();
+  const kit::Springs springs = kernels.build_springs(scene.grid, scene.springs);
+  const auto r = kit::stability_at(scene, scene.grid.nx, kernels, kit::ClothIntegrator::symplectic_euler);
+  for (double factor : {0.9, 1.1}) {
+    kit::ClothRunOptions run{kit::ClothIntegrator::symplectic_euler, factor * r.measured.estimate(), 1.0, 0, 20, false};
+    const auto rec = kit::run_cloth(scene, springs, kernels, run);
+    INFO("Δt = " << factor << " Δt_max");
+    CHECK((rec.exploded_at >= 0) == (factor > 1));
+  }
+}
