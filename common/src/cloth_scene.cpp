@@ -30,8 +30,8 @@ ClothScene at_resolution(const ClothScene& scene, int n) {
   for (const Pin& pin : scene.pins) {
     const long i = resolve(pin.i, n), j = resolve(pin.j, out.grid.ny);
     if (i < 0 || i >= n || j < 0 || j >= out.grid.ny)
-      throw UsageError(fmt::format("resolution {}: pin [{}, {}] lies outside the {} × {} grid", n, pin.i, pin.j,
-                                   n, out.grid.ny));
+      throw UsageError(fmt::format("resolution {}: pin [{}, {}] lies outside the {} × {} grid", n, pin.i,
+                                   pin.j, n, out.grid.ny));
   }
   return out;
 }
@@ -39,7 +39,8 @@ ClothScene at_resolution(const ClothScene& scene, int n) {
 long pinned_node(const ClothGrid& grid, const Pin& pin) {
   const long i = resolve(pin.i, grid.nx), j = resolve(pin.j, grid.ny);
   if (i < 0 || i >= grid.nx || j < 0 || j >= grid.ny)
-    throw std::out_of_range(fmt::format("pin [{}, {}] outside the {} × {} grid", pin.i, pin.j, grid.nx, grid.ny));
+    throw std::out_of_range(
+        fmt::format("pin [{}, {}] outside the {} × {} grid", pin.i, pin.j, grid.nx, grid.ny));
   return grid.index(int(i), int(j));
 }
 

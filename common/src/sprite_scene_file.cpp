@@ -57,12 +57,14 @@ std::optional<Spread> spread(const Section& s, std::string_view k, const RealRan
   }
   const double low = result.mean - result.variance, high = result.mean + result.variance;
   if (draws && !(draws->contains(low) && draws->contains(high)))
-    r.bad(*n, name, fmt::format("every draw mean ± variance must be {}, got [{}, {}]", draws->describe(), low,
-                                high));
+    r.bad(*n, name,
+          fmt::format("every draw mean ± variance must be {}, got [{}, {}]", draws->describe(), low, high));
   return result;
 }
 
-std::optional<Vec3d> colour(const Section& s, std::string_view k) { return s.vec3(k, between(0, 1), "r, g, b"); }
+std::optional<Vec3d> colour(const Section& s, std::string_view k) {
+  return s.vec3(k, between(0, 1), "r, g, b");
+}
 
 constexpr std::size_t max_emitters = 255;  // a particle stores its emitter's index in a byte
 

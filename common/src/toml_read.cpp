@@ -84,7 +84,8 @@ toml::table Reader::parse(std::string_view text) const {
   try {
     return toml::parse(text, file_);
   } catch (const toml::parse_error& e) {
-    fail_at(e.source(), fmt::format("TOML syntax error at column {}: {}", e.source().begin.column, e.description()));
+    fail_at(e.source(),
+            fmt::format("TOML syntax error at column {}: {}", e.source().begin.column, e.description()));
   }
 }
 
@@ -115,8 +116,9 @@ long Reader::integer(const toml::node& n, const std::string& key, long long lo, 
   if (!i) bad(n, key, fmt::format("expected an integer, got {}", kind(n)));
   const long long x = i->get();
   if (x < lo || x > hi)
-    bad(n, key, hi == no_limit ? fmt::format("must be an integer >= {}", lo)
-                               : fmt::format("must be an integer in [{}, {}]", lo, hi));
+    bad(n, key,
+        hi == no_limit ? fmt::format("must be an integer >= {}", lo)
+                       : fmt::format("must be an integer in [{}, {}]", lo, hi));
   return static_cast<long>(x);
 }
 
@@ -143,10 +145,12 @@ std::size_t Reader::choice(const toml::node& n, const std::string& key,
 const toml::array& Reader::array(const toml::node& n, const std::string& key, std::size_t size,
                                  std::string_view elements, std::string_view components) const {
   const auto* a = n.as_array();
-  if (!a) bad(n, key, fmt::format("expected an array of {} {} [{}], got {}", size, elements, components, kind(n)));
+  if (!a)
+    bad(n, key, fmt::format("expected an array of {} {} [{}], got {}", size, elements, components, kind(n)));
   if (a->size() != size)
-    bad(n, key, fmt::format("expected an array of {} {} [{}], got {} elements", size, elements, components,
-                            a->size()));
+    bad(n, key,
+        fmt::format("expected an array of {} {} [{}], got {} elements", size, elements, components,
+                    a->size()));
   return *a;
 }
 
