@@ -2,7 +2,7 @@
 // Reading a scene file with toml++, shared by the scene loaders of chapter 5 (sprites) and
 // chapters 6–7 (cloth). Every mistake is a UsageError that names the file, the line, the full
 // dotted key, the bad value and what is allowed:
-//   scenes/flag.toml:12: springs.shear.stiffness = -1: must be a finite number in (0, 1e+09]
+//   scenes/flag.toml:26: springs.shear.stiffness = -1: must be a finite number in (0, 1000000000]
 // A private header of kit_common (not under include/): toml++ is a private dependency of the
 // library, so nothing outside common/src may see its types.
 #include <array>

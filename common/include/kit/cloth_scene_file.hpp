@@ -3,7 +3,7 @@
 // models: a spring family, force, collider or strain limit it leaves out is never built. Every
 // mistake is a UsageError (exit 2) naming the file, the line, the full dotted key, the bad value
 // and what is allowed:
-//   scenes/flag.toml:14: springs.bend.layout = 5: must be 4 (two steps along the axes, Provot) or 8 ...
+//   scenes/flag.toml:31: springs.bend.layout = 5: must be 4 (two steps along the axes, Provot) or 8 ...
 //
 // Schema (units in brackets; a key marked "default" may be left out):
 //
