@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
   return app.run(argc, argv, [&] {
     const auto scene = kit::apply_cloth_flags(kit::load_cloth_scene_flag(flags, fs::path(KIT_CHAPTER_SOURCE_DIR) / "scenes"), flags);
     const kit::ClothRunOptions run = kit::cloth_run_options(scene);
-    kit::announce_run(app.report(), "animation", "The run", kit::estimate_cloth_run(scene, run),
+    kit::announce_run(app.report(), "animation", "The run", kit::estimate_cloth_chapter(scene, run),
                       kit::describe_cloth_flags(scene), {.max_bytes = kit::machine_memory()});
     app.summary()["scene"] = kit::cloth_scene_summary(scene);
     const kit::ClothKernels kernels = kit::student_cloth_kernels();

@@ -135,4 +135,18 @@ nlohmann::json cloth_scene_summary(const ClothScene& s) {
   };
 }
 
+ClothRunOptions cloth_run_options(const ClothScene& scene) {
+  ClothRunOptions run;
+  run.integrator = scene.integrator;
+  run.dt = scene.dt;
+  run.t_end = scene.t_end;
+  run.frames = scene.frames;
+  return run;
+}
+
+std::string describe_cloth_flags(const ClothScene& scene) {
+  return fmt::format("--resolution {} ({}×{} nodes), --dt {} s, --t-end {} s, --frames {}", scene.grid.nx,
+                     scene.grid.nx, scene.grid.ny, scene.dt, scene.t_end, scene.frames);
+}
+
 }  // namespace kit

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <kit/chapter_app.hpp>
+#include <kit/cloth_run.hpp>
 #include <kit/cloth_scene.hpp>
 
 namespace kit {
@@ -37,5 +38,12 @@ ClothScene apply_cloth_flags(ClothScene scene, const ClothFlags& flags);
 /// The scene as the --json summary reports it: every field, units in the key names' comments of
 /// cloth_scene.hpp, absent parts as null.
 nlohmann::json cloth_scene_summary(const ClothScene& scene);
+
+/// The run the scene (with the flags applied) asks for: its integrator, Δt, end and frames.
+ClothRunOptions cloth_run_options(const ClothScene& scene);
+
+/// "--resolution 32 (32×22 nodes), --dt 0.0002 s, --t-end 3 s, --frames 90": the flags that set a
+/// run's cost, for its estimate and its refusal.
+std::string describe_cloth_flags(const ClothScene& scene);
 
 }  // namespace kit

@@ -45,9 +45,11 @@ inline constexpr double exploded_strain = 10.0;
 ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothKernels kernels,
                          const ClothRunOptions& options);
 
-/// What a run costs before it starts: steps, and the memory of the state, springs and frames.
-/// `stage_ns` is a conservative cost of one spring in one force evaluation [ns].
-RunEstimate estimate_cloth_run(const ClothScene& scene, const ClothRunOptions& options, double stage_ns = 6.0);
+/// What chapter 6's runs of a scene cost before they start: the scene once with each of the
+/// four integrators and once more with the strain limit switched, in steps (progress counts one
+/// per step) and the memory of the state, springs and kept frames. `stage_ns` is a
+/// conservative cost of one spring in one force evaluation [ns].
+RunEstimate estimate_cloth_chapter(const ClothScene& scene, const ClothRunOptions& options, double stage_ns = 6.0);
 
 /// The deepest any node of x lies inside the scene's ground or spheres [m] (0: none inside).
 double deepest_penetration(const ClothScene& scene, const NodeArray& x);
