@@ -17,7 +17,7 @@ namespace {
 constexpr double max_pixel_coordinate = 1e6;
 constexpr double checker_square = 0.25;  // [m]
 // Sphere colliders: a neutral blue-grey with a small highlight, so the sheet's colours stand out.
-constexpr Vec3d sphere_colour{0.60, 0.62, 0.66};
+constexpr Vec3d sphere_colour{0.72, 0.74, 0.78};
 constexpr Vec3d ground_light{0.70, 0.68, 0.63}, ground_dark{0.46, 0.44, 0.41};
 
 Vector3 to_vector(const Vec3d& v) { return {v[0], v[1], v[2]}; }
@@ -35,9 +35,15 @@ void put(Image& image, int px, int py, const Vec3d& colour) {
 
 Vector3 key_light() { return to_vector(cloth_key_light).normalized(); }
 
-// Lambert plus ambient for a unit normal n.
+// A dim fill light from the side opposite the key (and a little from below the horizon's glow),
+// so that what the key light misses keeps its shape instead of flattening into the ambient.
+constexpr double fill_strength = 0.22;
+const Vector3 fill_light = Vector3(0.6, 0.25, -0.35).normalized();
+
+// Ambient plus Lambert from the key and fill lights for a unit normal n, at most 1.
 double lit(const Vector3& n, const Vector3& light) {
-  return cloth_ambient + (1 - cloth_ambient) * std::max(0.0, n.dot(light));
+  return std::min(1.0, cloth_ambient + (1 - cloth_ambient) * std::max(0.0, n.dot(light)) +
+                           fill_strength * std::max(0.0, n.dot(fill_light)));
 }
 
 // The nearest t ≥ t_min with |origin + t·ray − centre| = radius, or nullopt.
@@ -60,12 +66,12 @@ void draw_surroundings(const SpriteCamera& camera, const ClothScene& scene, Imag
   const Vector3 eye = to_vector(camera.eye()), light = key_light();
   const int width = image.width, height = image.height;
   for (int py = 0; py < height; ++py) {
-    const Vec3d sky = mix(cloth_sky_top, cloth_sky_bottom, height > 1 ? double(py) / (height - 1) : 0.0);
     for (int px = 0; px < width; ++px) {
       // The ray's view-axis component is 1, so the parameter t along it is the depth.
       const Vector3 ray = to_vector(camera.ray(px + 0.5, py + 0.5));
+      const double inv_ray_length = 1 / ray.norm();
       double nearest = std::numeric_limits<double>::infinity();
-      Vec3d colour = sky;
+      Vec3d colour = cloth_sky(ray.y() * inv_ray_length);
       if (scene.ground && ray.y() != 0) {
         const double t = (scene.ground->height - eye.y()) / ray.y();
         if (t >= SpriteCamera::near_depth) {
@@ -74,7 +80,7 @@ void draw_surroundings(const SpriteCamera& camera, const ClothScene& scene, Imag
               (long(std::floor(p.x() / checker_square)) + long(std::floor(p.z() / checker_square))) % 2 == 0;
           // A pixel spans about t/F metres across (more at grazing angles); once a square is only a
           // few pixels wide the checker would alias, so it fades to its mean and then into the sky.
-          const double footprint = t / camera.focal_px() / std::max(0.05, std::abs(ray.normalized().y()));
+          const double footprint = t / camera.focal_px() / std::max(0.05, std::abs(ray.y()) * inv_ray_length);
           const double contrast = std::clamp(1.5 - 3 * footprint / checker_square, 0.0, 1.0);
           Vec3d ground = mix(mix(ground_light, ground_dark, 0.5), light_square ? ground_light : ground_dark,
                              contrast);
@@ -93,8 +99,8 @@ void draw_surroundings(const SpriteCamera& camera, const ClothScene& scene, Imag
         if (!t || *t >= nearest) continue;
         nearest = *t;
         const Vector3 n = (eye + *t * ray - sphere.center) / sphere.radius;
-        const Vector3 half_way = (light - ray.normalized()).normalized();
-        const double highlight = 0.25 * std::pow(std::max(0.0, n.dot(half_way)), 40);
+        const Vector3 half_way = (light - ray * inv_ray_length).normalized();
+        const double highlight = 0.2 * std::pow(std::max(0.0, n.dot(half_way)), 40);
         colour = scaled(sphere_colour, lit(n, light));
         colour = {colour[0] + highlight, colour[1] + highlight, colour[2] + highlight};
       }
@@ -109,6 +115,10 @@ struct ScreenVertex {
 };
 
 }  // namespace
+
+Vec3d cloth_sky(double elevation) {
+  return mix(cloth_sky_bottom, cloth_sky_top, std::clamp(elevation / 0.5, 0.0, 1.0));  // sin 30° = 0.5
+}
 
 Image render_cloth(const ClothGrid& grid, const NodeArray& x, const ClothScene& scene, int width, int height,
                    ClothRenderStats* stats) {

@@ -44,8 +44,8 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
-// A vertical sheet facing the default camera (which looks along −z from z = 3): u = x, v = −y,
-// so u × v = −z... turned: u = x, v = y gives u × v = +z, towards the camera.
+// A vertical 1 m sheet in the plane z = 0 facing a camera that looks along −z from z = 3:
+// u = x, v = y, so u × v = +z points at the camera (its front shows).
 kit::ClothScene facing_scene(kit::ClothGrid& grid) {
   grid.nx = 9, grid.ny = 9, grid.width = 1, grid.height = 1;
   grid.origin = {-0.5, 0.0, 0.0};
@@ -160,7 +160,11 @@ TEST_CASE("a sheet facing the camera fills the centre with its front colour; the
   CHECK(factor <= 1 + 1e-6);
   CHECK(near_colour(centre, {kit::cloth_front_colour[0] * factor, kit::cloth_front_colour[1] * factor,
                              kit::cloth_front_colour[2] * factor}, 1e-5));
-  CHECK(near_colour(image.pixel(0, 0), kit::cloth_sky_top, 0.01));
+  // The top-left pixel's ray: camera looking along −z, focal length 60/tan 20° pixels.
+  const double focal = 60 / std::tan(20 * M_PI / 180), a = (0.5 - 80) / focal, b = (60 - 0.5) / focal;
+  const kit::Vec3d sky = kit::cloth_sky(b / std::sqrt(a * a + b * b + 1));
+  CHECK(near_colour(image.pixel(0, 0), sky, 1e-6));
+  CHECK(!near_colour(image.pixel(0, 0), kit::cloth_sky_bottom, 0.05));  // above the horizon: bluer
   // Seen from behind, the same sheet shows its back colour.
   scene.camera.position = {0, 0.5, -3};
   const kit::Image behind = kit::render_cloth(grid, flat_positions(grid), scene, 160, 120);
@@ -172,21 +176,18 @@ TEST_CASE("the ground and a sphere are drawn, and the sheet hides what is behind
   kit::ClothScene scene = facing_scene(grid);
   scene.ground = kit::GroundCollider{-0.2, 0};
   scene.spheres.push_back({{0, 0.5, -1}, 0.3, 0});
-  const kit::NodeArray far_away = kit::NodeArray::Constant(grid.nodes(), 3, 0) +
-                                  kit::NodeArray::Constant(grid.nodes(), 3, 0);
   // The sheet moved out of view (all nodes behind the camera): the sphere shows at the centre.
   kit::NodeArray behind_camera = flat_positions(grid);
   behind_camera.col(2).array() += 10;
   const kit::Image sphere_only = kit::render_cloth(grid, behind_camera, scene, 160, 120);
   const float* centre = sphere_only.pixel(80, 60);
   CHECK(std::abs(centre[0] - centre[2]) < 0.1f);  // the sphere is grey, not the sheet's red
-  CHECK(!near_colour(centre, kit::cloth_sky_top, 0.05));
+  CHECK(!near_colour(centre, kit::cloth_sky(0), 0.05));  // the sky behind it
   // The bottom row sees the ground, not the sky's bottom colour.
   CHECK(!near_colour(sphere_only.pixel(80, 119), kit::cloth_sky_bottom, 0.02));
   // With the sheet in front, the centre is the sheet's again.
   const kit::Image with_sheet = kit::render_cloth(grid, flat_positions(grid), scene, 160, 120);
   CHECK(with_sheet.pixel(80, 60)[0] > with_sheet.pixel(80, 60)[2] * 1.5f);
-  (void)far_away;
 }
 
 TEST_CASE("a diverged sheet (NaN, 1e300, nodes behind the camera) renders without throwing", "[cloth]") {
