@@ -38,7 +38,8 @@ std::filesystem::path FrameWriter::write(const Image& image) {
   std::filesystem::path file = dir_ / fmt::format("frame_{:04d}.png", number);
   write_png(image, file);
   frames_.files.push_back(file);
-  if (number % sheet_every_ == 0 && long(frames_.sheet.size()) < sheet_frames_) frames_.sheet.push_back(image);
+  if (number % sheet_every_ == 0 && long(frames_.sheet.size()) < sheet_frames_)
+    frames_.sheet.push_back(image);
   return file;
 }
 
@@ -59,7 +60,8 @@ std::optional<AnimationOutputs> finish_animation(const FrameSequence& frames, do
   const std::filesystem::path frame_dir = frames.files.front().parent_path();
   made.movie = encode_animation(frame_dir / frame_file_pattern, fps, targets.mp4, targets.gif);
   made.player = targets.player;
-  const auto pattern = std::filesystem::relative(frame_dir, targets.player.parent_path()) / frame_file_pattern;
+  const auto pattern =
+      std::filesystem::relative(frame_dir, targets.player.parent_path()) / frame_file_pattern;
   write_player(made.player, pattern.string(), long(frames.files.size()), fps, frames.width, frames.height);
   return made;
 }

@@ -17,9 +17,11 @@ namespace {
 
 void check_shape(const ClothGrid& grid, const NodeArray& x) {
   if (grid.nx < 2 || grid.ny < 2)
-    throw std::invalid_argument(fmt::format("a cloth grid needs at least 2 x 2 nodes, not {} x {}", grid.nx, grid.ny));
+    throw std::invalid_argument(
+        fmt::format("a cloth grid needs at least 2 x 2 nodes, not {} x {}", grid.nx, grid.ny));
   if (x.rows() != long(grid.nx) * grid.ny)
-    throw std::invalid_argument(fmt::format("{} node positions for a {} x {} grid", x.rows(), grid.nx, grid.ny));
+    throw std::invalid_argument(
+        fmt::format("{} node positions for a {} x {} grid", x.rows(), grid.nx, grid.ny));
 }
 
 // The sheet's own orientation: u×v, or world up when u and v are parallel or not finite.
@@ -135,8 +137,8 @@ ObjMesh read_obj(const std::filesystem::path& path) {
         if (slashes == std::string_view::npos) continue;
         const int normal = index(word.substr(slashes + 2), mesh.normals.size(), "normal");
         if (normal != face[std::size_t(k)])
-          throw fail(fmt::format("normal {} given to vertex {}: one normal per vertex, same index", normal + 1,
-                                 face[std::size_t(k)] + 1));
+          throw fail(fmt::format("normal {} given to vertex {}: one normal per vertex, same index",
+                                 normal + 1, face[std::size_t(k)] + 1));
       }
       mesh.faces.push_back(face);
     } else {

@@ -36,7 +36,8 @@ kit::ClothGrid bent_grid() {
 }
 kit::NodeArray bent_positions(const kit::ClothGrid& grid) {
   kit::NodeArray x = flat_positions(grid);
-  for (long k = 0; k < x.rows(); ++k) x(k, 1) += 0.3 * std::sin(3 * x(k, 0)) * std::cos(2 * x(k, 2)) + 1e-10 * k;
+  for (long k = 0; k < x.rows(); ++k)
+    x(k, 1) += 0.3 * std::sin(3 * x(k, 0)) * std::cos(2 * x(k, 2)) + 1e-10 * k;
   return x;
 }
 
@@ -63,7 +64,8 @@ bool near_colour(const float* pixel, const kit::Vec3d& colour, double tolerance)
 
 }  // namespace
 
-TEST_CASE("a bent sheet's OBJ reads back: counts, positions, unit normals agreeing with its faces", "[cloth]") {
+TEST_CASE("a bent sheet's OBJ reads back: counts, positions, unit normals agreeing with its faces",
+          "[cloth]") {
   const kit::test::TempDir dir("cloth-obj");
   const kit::ClothGrid grid = bent_grid();
   const kit::NodeArray x = bent_positions(grid);
@@ -228,7 +230,8 @@ TEST_CASE("the frame writer numbers frames from 0, clears stale ones and leaves 
   CHECK(writer.frames().files.size() == 6);
   CHECK(writer.frames().sheet.size() == 3);  // frames 0, 2 and 4
   CHECK(kit::read_png(frames / "frame_0005.png").rgba[0] == kit::to_byte(0.5f));
-  const auto outputs = kit::finish_animation(writer.frames(), 10, kit::animation_targets(dir.path(), "drape"));
+  const auto outputs =
+      kit::finish_animation(writer.frames(), 10, kit::animation_targets(dir.path(), "drape"));
   REQUIRE(outputs);
   CHECK(outputs->sheet == dir.path() / "drape_sheet.png");
   CHECK(std::filesystem::exists(outputs->sheet));
