@@ -94,7 +94,7 @@ void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
                       const kit::SpriteRunOptions& run) {
   const fs::path out = app.options().out_dir;
   app.report().say("frames", "4. {count} frames ({width}x{height}) in {dir}; {drawn} sprites drawn, "
-                   "{culled} culled, {pixels} pixels blended.\n", {{"count", long(rec.frame_files.size())},
+                   "{culled} culled, {pixels} pixels blended.\n", {{"count", long(rec.rendered.files.size())},
                    {"width", long(run.width)}, {"height", long(run.height)}, {"dir", run.frame_dir.string()},
                    {"drawn", rec.render.sprites_drawn}, {"culled", rec.render.sprites_culled},
                    {"pixels", rec.render.pixels_blended}});

@@ -46,4 +46,10 @@ std::optional<Projected> SpriteCamera::project(double x, double y, double z) con
   return Projected{0.5 * width_ + scale * dot(d, right_), 0.5 * height_ - scale * dot(d, up_), depth};
 }
 
+Vec3d SpriteCamera::ray(double px, double py) const {
+  const double a = (px - 0.5 * width_) / focal_px_, b = (0.5 * height_ - py) / focal_px_;
+  return {forward_[0] + a * right_[0] + b * up_[0], forward_[1] + a * right_[1] + b * up_[1],
+          forward_[2] + a * right_[2] + b * up_[2]};
+}
+
 }  // namespace kit

@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include <kit/contact_sheet.hpp>
 #include <kit/progress.hpp>
 
 namespace kit {
@@ -95,21 +94,17 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
   SpriteSystem system(scene, options.max_particles, options.fps, options.seed, options.integrator, kernels);
   const bool render = !options.frame_dir.empty();
   std::optional<SpriteRenderer> renderer;
+  std::optional<FrameWriter> writer;
   if (render) {
     renderer.emplace(scene, options.width, options.height);
     renderer->composite_over_with(options.over);
-    std::filesystem::create_directories(options.frame_dir);
-    // An earlier run's frames would join this run's animation (ffmpeg reads until one is missing).
-    for (const auto& entry : std::filesystem::directory_iterator(options.frame_dir))
-      if (entry.path().filename().string().starts_with("frame_") && entry.path().extension() == ".png")
-        std::filesystem::remove(entry.path());
+    writer.emplace(options.frame_dir, options.width, options.height, options.frames, options.sheet_frames);
   }
   Image image(options.width, options.height, scene.background);
   // Paths: every stride-th particle of the first half of the run's expected emissions.
   const double per_frame = expected_alive(scene, options) / std::max(1.0, options.fps * scene.emitters[0].lifetime.mean);
   const auto stride = std::uint32_t(std::max(1.0, std::floor(per_frame * double(options.frames) / 2 / options.paths)));
   std::map<std::uint32_t, ParticlePath> paths;
-  const long sheet_every = std::max(1L, options.frames / std::max(1, options.sheet_frames));
   for (long k = 0; k < options.warmup_frames + options.frames; ++k) {
     const long f = k - options.warmup_frames;  // the rendered frame's number; negative while warming up
     const FrameCounts counts = system.step();
@@ -133,12 +128,11 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
       const RenderStats s = renderer->render(ps, image);
       rec.render.sprites_drawn += s.sprites_drawn, rec.render.sprites_culled += s.sprites_culled;
       rec.render.pixels_blended += s.pixels_blended;
-      rec.frame_files.push_back(options.frame_dir / fmt::format("frame_{:04d}.png", f));
-      write_png(image, rec.frame_files.back());
-      if (f % sheet_every == 0 && long(rec.sheet.size()) < options.sheet_frames) rec.sheet.push_back(image);
+      writer->write(image);  // frame f, from 0
     }
     progress_add(1);
   }
+  if (writer) rec.rendered = writer->release();
   rec.totals = system.totals();
   rec.work = system.work();
   for (auto& [id, path] : paths) rec.paths.push_back(std::move(path));
@@ -147,15 +141,8 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
 
 std::optional<AnimationOutputs> write_animation(const SpriteRecording& rec, const SpriteRunOptions& options,
                                                 const std::filesystem::path& out) {
-  if (rec.frame_files.empty()) return std::nullopt;
-  AnimationOutputs made{out / "contact_sheet.png", out / "play.gp", {}};
-  write_png(contact_sheet(rec.sheet, 4, 8), made.sheet);
-  made.movie = encode_animation(options.frame_dir / "frame_%04d.png", options.fps, out / "animation.mp4",
-                                out / "animation.gif");
-  const auto frames = std::filesystem::relative(options.frame_dir, out) / "frame_%04d.png";
-  write_player(made.player, frames.string(), long(rec.frame_files.size()), options.fps, options.width,
-               options.height);
-  return made;
+  return finish_animation(rec.rendered, options.fps,
+                          {out / "animation.mp4", out / "animation.gif", out / "play.gp", out / "contact_sheet.png"});
 }
 
 }  // namespace kit

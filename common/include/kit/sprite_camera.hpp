@@ -29,6 +29,13 @@ class SpriteCamera {
   /// depth < near_depth (behind the camera or too close).
   std::optional<Projected> project(double x, double y, double z) const;
 
+  /// The inverse of project: the point at `depth` [m] along the view axis that lands on (px, py)
+  /// is eye() + depth·ray(px, py); the ray's component along the view axis is 1. For ray casting
+  /// (the cloth renderer's spheres and ground).
+  Vec3d ray(double px, double py) const;
+  Vec3d eye() const { return eye_; }
+  Vec3d forward() const { return forward_; }
+
   /// Pixels that one metre spans, facing the camera at `depth` [px/m]: F/depth.
   double pixels_per_metre(double depth) const { return focal_px_ / depth; }
   /// Focal length in pixels: F = (H/2)/tan(fov/2), fov vertical.

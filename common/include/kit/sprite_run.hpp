@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <kit/animation.hpp>
+#include <kit/frame_writer.hpp>
 #include <kit/image.hpp>
 #include <kit/run_estimate.hpp>
 #include <kit/sprite_renderer.hpp>
@@ -46,8 +47,7 @@ struct SpriteRecording {
   UpdateWork work;
   RenderStats render;               ///< summed over the frames rendered
   std::vector<ParticlePath> paths;
-  std::vector<std::filesystem::path> frame_files;
-  std::vector<Image> sheet;         ///< the frames kept for the contact sheet
+  FrameSequence rendered;           ///< the frames written, with those kept for the contact sheet
   long warmup_frames = 0;           ///< the first frames, run but not rendered
   long peak_alive = 0;
   long diverged_at = -1;            ///< first frame with a non-finite position, or −1
@@ -64,13 +64,9 @@ double expected_alive(const SpriteScene& scene, const SpriteRunOptions& options)
 /// pixels; memory from max_particles, the images kept and the textures.
 RunEstimate estimate_sprite_run(const SpriteScene& scene, const SpriteRunOptions& options);
 
-/// What a recording's frames become in `out`: contact_sheet.png (the kept frames, 4 a row),
-/// animation.mp4 and .gif (ffmpeg, when installed) and play.gp (a gnuplot player).
-struct AnimationOutputs {
-  std::filesystem::path sheet, player;
-  AnimationResult movie;
-};
-/// Writes them; nothing when no frame was rendered (a run that diverged before its first frame).
+/// What a recording's frames become in `out` (finish_animation): contact_sheet.png (the kept
+/// frames, 4 a row), animation.mp4 and .gif (ffmpeg, when installed) and play.gp (a gnuplot
+/// player). Nothing when no frame was rendered (a run that diverged before its first frame).
 std::optional<AnimationOutputs> write_animation(const SpriteRecording& recording, const SpriteRunOptions& options,
                                                 const std::filesystem::path& out);
 
