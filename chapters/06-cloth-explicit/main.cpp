@@ -10,6 +10,7 @@
 #include <kit/chapter_app.hpp>
 #include <kit/cloth_figures.hpp>
 #include <kit/cloth_flags.hpp>
+#include <kit/animation.hpp>
 #include <kit/cloth_output.hpp>
 #include <kit/spring_force_check.hpp>
 

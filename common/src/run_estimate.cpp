@@ -1,5 +1,7 @@
 #include <kit/run_estimate.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
 
 #include <fmt/format.h>
@@ -43,6 +45,10 @@ void announce_run(Report& report, std::string_view section, std::string_view wha
   else
     report.store(place, fields);
   ProgressTask::set_total(e.work > 0 ? e.work : e.steps);
+}
+
+double machine_memory() {
+  return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
 }
 
 }  // namespace kit

@@ -2,7 +2,6 @@
 
 #include <climits>
 #include <map>
-#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -89,10 +88,6 @@ nlohmann::json run_summary(const SpriteScene& scene, const SpriteRunOptions& run
   return {{"name", scene.name}, {"file", scene.file}, {"frames", run.frames}, {"fps", run.fps},
           {"max_particles", run.max_particles}, {"integrator", flags.integrator},
           {"warmup_frames", run.warmup_frames}};
-}
-
-double machine_memory() {
-  return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
 }
 
 }  // namespace kit

@@ -47,12 +47,12 @@ MeasuredDtMax measure_dt_max(const ClothScene& scene, const Springs& springs, Cl
                              ClothIntegrator integrator, double lo, double hi, long steps = 2000,
                              double relative = 0.005);
 
-/// The scene's sheet, springs and pins alone: no gravity, drag, collider or strain limit, so
-/// that the only motion is the springs' (the linearisation the prediction is made on).
+/// The scene's sheet, springs and pins alone: no gravity, drag, collider, strain limit or spring
+/// damping, so that the only motion is the springs' (the linearisation the prediction is made on).
 ClothScene springs_only(const ClothScene& scene);
 
-/// Δt_max of one integrator on the scene's sheet at resolution n: the prediction from ω_max at
-/// rest and the measurement, with the spring-force evaluations one simulated second costs at
+/// Δt_max of one integrator on the scene's sheet at resolution n, its springs damped with
+/// μ = damping_time·K (undamped at 0): the prediction from ω_max at rest and the measurement, with the spring-force evaluations one simulated second costs at
 /// 0.9 Δt_max (the explicit cost, ∝ N³ for a fixed sheet).
 struct StabilityAtResolution {
   int n = 0;
@@ -62,13 +62,15 @@ struct StabilityAtResolution {
   MeasuredDtMax measured;
   double spring_evaluations_per_second = 0;  ///< per simulated second at 0.9 × measured Δt_max
 };
+/// `steps` bounds each run of the bisection (a weak growth needs many steps to show).
 StabilityAtResolution stability_at(const ClothScene& scene, int n, ClothKernels kernels,
-                                   ClothIntegrator integrator, double damping_time = 0);
+                                   ClothIntegrator integrator, double damping_time = 0, long steps = 2000);
 
 /// The stability table of chapter 6 on the scene's sheet at n nodes across, all springs at the
 /// scene's structural stiffness: undamped, symplectic Euler and RK4 on three layouts
 /// (structural; + shear; + shear + bend); then damped along the springs, μ = damping_time·k,
-/// with all four integrators on the full layout.
+/// with all four integrators on the full layout. Explicit Euler and midpoint grow slowly just
+/// above their damped limit (by 1 + ω²Δt(Δt − c) a step for Euler), so their runs are 10× longer.
 struct StabilityCase {
   std::string layout;
   ClothIntegrator integrator;

@@ -32,6 +32,9 @@ struct RunLimits {
   double max_bytes = 4e9;         ///< or beyond 4 GB [B]
 };
 
+/// Physical memory of this machine [B] (sysconf), the bound on what a run may ask for.
+double machine_memory();
+
 /// "40 MB", "2.1 GB", "under 1 MB": an amount of memory for a person to read.
 std::string describe_bytes(double bytes);
 /// "about 2.3e+09 steps: about 4 s and under 1 MB".

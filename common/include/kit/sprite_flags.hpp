@@ -5,6 +5,7 @@
 #include <string>
 
 #include <kit/chapter_app.hpp>
+#include <kit/run_estimate.hpp>
 #include <kit/sprite_run.hpp>
 #include <kit/sprite_scene.hpp>
 
@@ -37,8 +38,5 @@ SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene,
 
 /// The summary's "scene" object: the scene, its file, and what the run uses of it.
 nlohmann::json run_summary(const SpriteScene& scene, const SpriteRunOptions& run, const SpriteFlags& flags);
-
-/// Physical memory of this machine [B] (sysconf), the bound on what a run may ask for.
-double machine_memory();
 
 }  // namespace kit
