@@ -1,5 +1,6 @@
 // The production cloth force pass (cloth_forces.hpp). Compiled with -fno-math-errno so that the
-// square root of a run vectorises (common/CMakeLists.txt).
+// square root of a run vectorises, and -fno-trapping-math so that the zero-length guard's
+// comparison and divide become a blend rather than a branch (common/CMakeLists.txt).
 #include <kit/cloth_forces.hpp>
 
 #include <algorithm>
@@ -68,6 +69,13 @@ void run_forces(const double* __restrict xa, const double* __restrict ya, const 
     fx[s] = scale * dx, fy[s] = scale * dy, fz[s] = scale * dz;
   }
 }
+
+// g += sign·f over one run, for each axis. The restrict pointers tell GCC what it cannot prove:
+// f's columns and the run's scratch forces do not overlap, so the loop vectorises.
+void scatter(double* __restrict gx, double* __restrict gy, double* __restrict gz, const double* __restrict fx,
+             const double* __restrict fy, const double* __restrict fz, int length, double sign) {
+  for (int s = 0; s < length; ++s) gx[s] += sign * fx[s], gy[s] += sign * fy[s], gz[s] += sign * fz[s];
+}
 }  // namespace
 
 void ClothForces::operator()(const NodeArray& x, const NodeArray& v, NodeArray& f) const {
@@ -93,8 +101,8 @@ void ClothForces::operator()(const NodeArray& x, const NodeArray& v, NodeArray& 
                         qz + b, rest, k, mu, fx_.data(), fy_.data(), fz_.data(), r.length);
     // Scatter in two passes: within one pass no two springs write the same node, so both
     // vectorise (in one pass, a run of offset 1 would write node a + 1 twice in a row).
-    for (int s = 0; s < r.length; ++s) gx[a + s] += fx_[s], gy[a + s] += fy_[s], gz[a + s] += fz_[s];
-    for (int s = 0; s < r.length; ++s) gx[b + s] -= fx_[s], gy[b + s] -= fy_[s], gz[b + s] -= fz_[s];
+    scatter(gx + a, gy + a, gz + a, fx_.data(), fy_.data(), fz_.data(), r.length, 1.0);
+    scatter(gx + b, gy + b, gz + b, fx_.data(), fy_.data(), fz_.data(), r.length, -1.0);
   }
   if (work_) {
     ++work_->force_passes;

@@ -2,8 +2,6 @@
 // at 1e4, 1e5 and 1e6 particles, as a fraction of this machine's memory-bandwidth bound measured
 // in the same run (a STREAM-like triad), against a straightforward array-of-structs double
 // update, and the render cost of a frame. One core. Timings live here, never in the tests.
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -21,45 +19,12 @@
 #include <kit/stopwatch.hpp>
 #include <kit/table.hpp>
 
+#include "bandwidth.hpp"
 #include "sprite_age_kill.hpp"
 #include "sprite_emit.hpp"
 
 namespace {
-// Fastest of `samples` timings of `run` [s per call]: a busy machine only ever slows a sample.
-template <class Run>
-double fastest(Run&& run, int samples = 5, double min_seconds = 0.2) {
-  double best = INFINITY;
-  for (int i = 0; i < samples; ++i) {
-    double seconds = 0;
-    kit::time_per_call([&] { run(); return 0; }, seconds, min_seconds);
-    best = std::min(best, seconds);
-  }
-  return best;
-}
-
-// Bytes in the last-level cache, from sysconf (0 when unknown).
-double last_level_cache() {
-  return double(std::max({sysconf(_SC_LEVEL3_CACHE_SIZE), sysconf(_SC_LEVEL2_CACHE_SIZE), 0L}));
-}
-
-// STREAM's triad, a[i] = b[i] + s·c[i], each array at least four times the last-level cache (the
-// STREAM rule), so that the arrays come from memory. Returns the bytes the memory moves per
-// second: 32 per element, two reads, one write and the read that brings the written line into
-// the cache first (STREAM's own count, 24, leaves that last one out).
-double triad_bandwidth(double& stream_convention) {
-  const std::size_t n = std::max<std::size_t>(std::size_t(1) << 25, std::size_t(4 * last_level_cache() / 8));
-  std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
-  const double s = 3.0;
-  const double seconds = fastest([&] {
-    double* __restrict pa = a.data();
-    const double* __restrict pb = b.data();
-    const double* __restrict pc = c.data();
-    for (std::size_t i = 0; i < n; ++i) pa[i] = pb[i] + s * pc[i];
-  }, 5, 0.0);
-  if (a[n / 2] != 7.0) std::abort();  // the loop ran, and was not optimised away
-  stream_convention = 24.0 * double(n) / seconds;
-  return 32.0 * double(n) / seconds;
-}
+using kit_bench::fastest, kit_bench::last_level_cache, kit_bench::triad_bandwidth;
 
 // The fountain's physics with lifetimes long enough that nobody dies while timing: the update
 // streams through every array once per step.
