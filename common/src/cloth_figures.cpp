@@ -21,7 +21,7 @@ std::string cloth_style(ClothIntegrator integrator) {
   return look::highlight;
 }
 
-Figure cloth_energy_figure(const std::map<ClothIntegrator, ClothRecording>& runs, double dt, const std::string& scene) {
+Figure cloth_energy_figure(const ClothRuns& runs, double dt, const std::string& scene) {
   Figure fig("energy", fmt::format("Energy of '{}' over time, each integrator at Δt = {:.3g} s", scene, dt));
   auto& p = fig.panel("time t [s]", "E(t) − E(0) [J]  (> 0: energy added by the method)");
   double lo = 0, hi = 0;

@@ -50,7 +50,7 @@ Sag hanging_sag(int n, Hanging hanging, ClothKernels kernels, long max_steps) {
   while (sag.steps < max_steps && !sag.settled) {
     for (int k = 0; k < 500; ++k) cloth.step(ClothIntegrator::symplectic_euler, dt);
     sag.steps += 500;
-    sag.settled = cloth.v.cwiseAbs().maxCoeff() < 1e-7;
+    sag.settled = cloth.v.cwiseAbs().maxCoeff() < 1e-6;
   }
   // The middle of the bottom edge: one node when n is odd, the mean of the two middle ones else.
   const long left = scene.grid.index((n - 1) / 2, n - 1), right = scene.grid.index(n / 2, n - 1);
@@ -70,6 +70,15 @@ Convergence richardson(double coarse, double middle, double fine) {
   c.limit = fine + d2 / (ratio - 1);
   c.remaining = std::abs(fine - c.limit) / std::abs(c.limit);
   return c;
+}
+
+MeshDependence measure_mesh_dependence(ClothKernels kernels) {
+  MeshDependence m;
+  for (Hanging hanging : all_hangings)
+    for (int n : {8, 16, 32, 64}) m.sags[hanging].push_back(hanging_sag(n, hanging, kernels));
+  const auto& edge = m.sags[Hanging::top_edge];
+  m.top_edge = richardson(edge[1].drop, edge[2].drop, edge[3].drop);
+  return m;
 }
 
 }  // namespace kit

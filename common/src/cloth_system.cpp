@@ -87,8 +87,14 @@ void ClothSystem::contacts() {
     }
   }
   for (const SphereCollider& sphere : scene_.spheres) {
+    // Nodes on the sphere join by straight edges, which cut into it by up to the sagitta of the
+    // longest edge, a cell's diagonal d: d²/(8r). The nodes rest that much outside, so that the
+    // cloth's triangles, not only its nodes, stay out of the sphere.
+    SphereCollider padded = sphere;
+    const double diagonal2 = scene_.grid.dx() * scene_.grid.dx() + scene_.grid.dy() * scene_.grid.dy();
+    padded.radius += diagonal2 / (8 * sphere.radius);
     work.sphere_tests += x.rows();
-    work.contacts += kernels_.collide_sphere(x, v, sphere);
+    work.contacts += kernels_.collide_sphere(x, v, padded);
   }
 }
 

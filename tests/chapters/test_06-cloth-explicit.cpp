@@ -4,11 +4,13 @@
 // nothing, the chapter's printed numbers are the ones checked here, bad input exits 2.
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <kit/cloth_mesh_dependence.hpp>
@@ -18,6 +20,7 @@
 #include <kit/obj_mesh.hpp>
 
 #include "cloth_kernels.hpp"
+#include "cloth_spring_force.hpp"
 #include "process.hpp"
 
 using nlohmann::json;
@@ -189,8 +192,13 @@ TEST_CASE("cloth: what a scene does not list is neither built nor computed", "[c
 }
 
 TEST_CASE("cloth: just below Δt_max the flag hangs; just above it, it explodes", "[cloth]") {
+  // The flag as measured (springs undamped), under gravity: it hangs at 0.9 Δt_max and explodes
+  // at 1.1 Δt_max. (With the scene's spring damping, symplectic Euler's limit is lower: the
+  // chapter's damped row.)
   kit::ClothScene scene = kit::load_cloth_scene(scenes / "flag.toml");
   scene.strain_limit.reset(), scene.drag.reset();
+  for (auto* family : {&scene.springs.structural, &scene.springs.shear, &scene.springs.bend})
+    if (*family) (*family)->damping = 0;
   auto kernels = kit::student_cloth_kernels();
   const kit::Springs springs = kernels.build_springs(scene.grid, scene.springs);
   const auto r = kit::stability_at(scene, scene.grid.nx, kernels, kit::ClothIntegrator::symplectic_euler);
@@ -200,4 +208,100 @@ TEST_CASE("cloth: just below Δt_max the flag hangs; just above it, it explodes"
     INFO("Δt = " << factor << " Δt_max");
     CHECK((rec.exploded_at >= 0) == (factor > 1));
   }
+}
+
+TEST_CASE("chapter 6: the printed numbers are the ones measured: Δt_max, the 1/N law, strain, the mesh") {
+  kit::test::TempDir out("ch06");
+  const json j = run_chapter({"--no-plot"}, out.path());
+  const json& spring = j["spring"];
+  CHECK(spring["third"].get<double>() < 1e-12);
+  CHECK(spring["gradient"].get<double>() < 1e-6);
+  CHECK(j["springs"]["total"] == j["springs"]["expected"]);
+  int symplectic = 0;
+  for (const json& row : j["stability"]) {
+    if (row["integrator"] != "symplectic-euler") continue;
+    ++symplectic;
+    CHECK(row["ratio"].get<double>() == Approx(1).epsilon(0.10));
+    if (row["layout"].get<std::string>().rfind("all three", 0) != 0)  // undamped: c = 2 exactly
+      CHECK(row["predicted"].get<double>() == Approx(2 / row["omega_max"].get<double>()).epsilon(1e-6));
+  }
+  CHECK(symplectic == 4);  // three layouts undamped, one damped
+  const json& law = j["resolution"];
+  REQUIRE(law.size() == 3);
+  for (const json& row : law) CHECK(row["n_dt"].get<double>() == Approx(law[0]["n_dt"].get<double>()).epsilon(0.15));
+  // The explicit cost per simulated second grows like N³: ×8 per doubling, within 25%.
+  for (int k : {1, 2})
+    CHECK(law[k]["per_second"].get<double>() / law[k - 1]["per_second"].get<double>() == Approx(8).epsilon(0.25));
+  // The flag is soft: springs alone stretch past the limit; the limit holds it within 1% of it.
+  CHECK(j["strain"]["free"].get<double>() > j["strain"]["max"].get<double>());
+  CHECK(j["strain"]["limited"].get<double>() < j["strain"]["max"].get<double>() + 1.0);
+  for (const json& row : j["integrators"])
+    if (row["integrator"] != "explicit-euler") CHECK(row["exploded_at"].is_null());
+  // The mesh: the top edge converges (order near 1), point pins keep sagging, k ∝ N halves it.
+  CHECK(j["mesh_limit"]["order"].get<double>() == Approx(1).margin(0.3));
+  CHECK(j["mesh_limit"]["remaining"].get<double>() < 2);
+  std::map<std::string, std::vector<double>> drops;
+  for (const json& row : j["mesh"]) {
+    CHECK(row["settled"].get<bool>());
+    drops[row["hanging"]].push_back(row["drop_mm"]);
+  }
+  const auto& corners = drops[kit::describe(kit::Hanging::corner_nodes)];
+  for (std::size_t k = 1; k < corners.size(); ++k) CHECK(corners[k] > corners[k - 1] + 3);
+  const auto& rope = drops[kit::describe(kit::Hanging::top_edge_k_by_n)];
+  for (std::size_t k = 1; k < rope.size(); ++k) CHECK(rope[k] / rope[k - 1] == Approx(0.5).epsilon(0.1));
+}
+
+TEST_CASE("chapter 6: frames, OBJ meshes that parse, and an animation player") {
+  kit::test::TempDir out("ch06-frames");
+  const json j = run_chapter({"--scene", "drape", "--resolution", "12", "--t-end", "0.4", "--frames", "4",
+                              "--width", "160", "--height", "120"}, out.path());
+  for (int k = 0; k <= 4; ++k) {
+    CHECK(fs::exists(out.path() / "frames" / fmt::format("frame_{:04d}.png", k)));
+    const kit::ObjMesh mesh = kit::read_obj(out.path() / "meshes" / fmt::format("cloth_{:04d}.obj", k));
+    CHECK(mesh.positions.size() == 144);
+    CHECK(mesh.normals.size() == 144);
+    CHECK(mesh.faces.size() == 2 * 11 * 11);
+  }
+  CHECK_FALSE(fs::exists(out.path() / "frames" / "frame_0005.png"));
+  CHECK(fs::exists(out.path() / "cloth_play.gp"));
+  for (const char* figure : {"energy", "strain", "stability", "resolution", "mesh"})
+    CHECK(fs::exists(out.path() / (std::string(figure) + ".png")));
+  CHECK(j["contacts"]["contacts"].get<long>() > 0);
+  CHECK(j["contacts"]["deepest"].get<double>() < 1e-9);
+}
+
+TEST_CASE("chapter 6: bad flags and bad scene files are usage errors that name the flag or file, line and key") {
+  kit::test::TempDir dir("ch06-scenes");
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir.path() / name) << text;
+    return (dir.path() / name).string();
+  };
+  const std::string sheet = "name = 'x'\n[cloth]\nnodes = [4, 4]\nsize = [1, 1]\n";
+  const auto unknown = write("unknown.toml", sheet + "[springs.structural]\nstiffness = 10\nstifness = 3\n");
+  const auto range = write("range.toml", sheet + "[springs.structural]\nstiffness = -10\n");
+  const auto pin = write("pin.toml", "pins = [[9, 0]]\n" + sheet + "[springs.structural]\nstiffness = 10\n");
+  kit::test::expect_usage_errors(binary, {
+      {{"--dt", "0"}, "--dt"},
+      {{"--dt", "2"}, "--dt"},
+      {{"--t-end", "-1"}, "--t-end"},
+      {{"--resolution", "1"}, "--resolution"},
+      {{"--frames", "0"}, "--frames"},
+      {{"--width", "8"}, "--width"},
+      {{"--integrator", "verlet"}, "--integrator"},
+      {{"--scene", "tablecloth"}, "flag"},  // names the scenes there are
+      {{"--scene", unknown}, "unknown.toml:7"},
+      {{"--scene", unknown}, "stifness"},
+      {{"--scene", range}, "range.toml:6"},
+      {{"--scene", range}, "stiffness"},
+      {{"--scene", pin}, "pin.toml:1"},
+  });
+}
+
+TEST_CASE("chapter 6: a resolution too large for the machine is refused up front with its estimate") {
+  kit::test::TempDir out("ch06-huge");
+  const auto result = kit::test::run_process(binary, {"--resolution", "100000", "--out", (out.path() / "f").string()});
+  INFO(result.err);
+  CHECK(result.exit_code == 2);
+  CHECK_THAT(result.err, Catch::Contains("--resolution 100000") && Catch::Contains("takes about"));
+  CHECK_FALSE(fs::exists(out.path() / "f"));
 }

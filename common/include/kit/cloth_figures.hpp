@@ -18,7 +18,7 @@ std::string cloth_style(ClothIntegrator integrator);
 
 /// Total energy minus its start, E(t) − E(0) [J], for each integrator at the scene's Δt: above
 /// zero the method adds energy, below it removes some. A run that exploded ends where it did.
-Figure cloth_energy_figure(const std::map<ClothIntegrator, ClothRecording>& runs, double dt, const std::string& scene);
+Figure cloth_energy_figure(const ClothRuns& runs, double dt, const std::string& scene);
 
 /// The largest structural stretch over time [%], with and without Provot's strain limit.
 Figure cloth_strain_figure(const ClothRecording& free, const ClothRecording& limited, double max_strain,

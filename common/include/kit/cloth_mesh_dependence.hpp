@@ -2,6 +2,7 @@
 // The lecture's "Limitations: dépendance au maillage", measured: one physical sheet hanging under
 // gravity, at rest, at several resolutions. How far the bottom edge drops depends on how the
 // sheet is held and on how the spring stiffness follows the resolution.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ const char* describe(Hanging hanging);
 ClothScene hanging_sheet(int n, Hanging hanging, double k = 50);
 
 /// The sheet at rest, found by dynamic relaxation: symplectic Euler (ex 6.3) at 0.9 of its
-/// Δt_max, with air drag of 5/s, until no node moves faster than 1e-7 m/s.
+/// Δt_max, with air drag of 5/s, until no node moves faster than 1e-6 m/s (the drag then
+/// leaves at most 1e-6/5 m = 0.2 µm to go).
 struct Sag {
   int n = 0;
   double drop = 0;         ///< how far the middle of the bottom edge sits below its rest place [m]
@@ -44,5 +46,13 @@ struct Convergence {
   bool converges = false;  ///< the successive differences shrink (ratio > 1)
 };
 Convergence richardson(double coarse, double middle, double fine);
+
+/// The chapter's experiment: every way of holding the sheet at N = 8, 16, 32, 64, and
+/// Richardson's estimate for the top edge from N = 16, 32, 64.
+struct MeshDependence {
+  std::map<Hanging, std::vector<Sag>> sags;
+  Convergence top_edge;
+};
+MeshDependence measure_mesh_dependence(ClothKernels kernels);
 
 }  // namespace kit

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <kit/animation.hpp>
 #include <kit/chapter_app.hpp>
 #include <kit/cloth_flags.hpp>
 #include <kit/cloth_run.hpp>

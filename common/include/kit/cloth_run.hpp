@@ -2,6 +2,7 @@
 // A cloth scene run from start to end (chapter 6): its energy and strain sampled over time, its
 // positions at the frame times, what was computed, and whether and when it exploded. A diverging
 // run is a result: it stops at the first sign and says when.
+#include <map>
 #include <vector>
 
 #include <kit/cloth_system.hpp>
@@ -44,6 +45,21 @@ inline constexpr double exploded_strain = 10.0;
 /// one unit of progress per step.
 ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothKernels kernels,
                          const ClothRunOptions& options);
+
+/// The scene run once with each of the four integrators; only `options.integrator`'s run keeps
+/// its frames.
+using ClothRuns = std::map<ClothIntegrator, ClothRecording>;
+ClothRuns run_each_integrator(const ClothScene& scene, const Springs& springs, ClothKernels kernels,
+                              const ClothRunOptions& options);
+
+/// The super-elastic effect: the same run with and without Provot's strain limit (the scene's,
+/// or the default 10% when it has none). `as_run` is the run the scene asked for, reused.
+struct StrainComparison {
+  ClothRecording free, limited;
+  double max_strain = 0;  ///< the limit's relative stretch
+};
+StrainComparison compare_strain_limit(const ClothScene& scene, const Springs& springs, ClothKernels kernels,
+                                      ClothRunOptions options, const ClothRecording& as_run);
 
 /// What chapter 6's runs of a scene cost before they start: the scene once with each of the
 /// four integrators and once more with the strain limit switched, in steps (progress counts one

@@ -30,7 +30,9 @@ class ClothSystem {
   /// std::invalid_argument when a kernel the scene needs is missing.
   ClothSystem(const ClothScene& scene, Springs springs, ClothKernels kernels);
 
-  /// One step of dt [s], then the ground, the spheres and the strain limit, in that order.
+  /// One step of dt [s], then the ground, the spheres and the strain limit, in that order. A
+  /// sphere is met at its radius plus the sagitta of a cell's diagonal, d²/(8r), so that the
+  /// straight edges between nodes on it stay outside it too.
   void step(ClothIntegrator integrator, double dt);
 
   NodeArray x, v;  ///< positions [m] and velocities [m/s], row i = node i
