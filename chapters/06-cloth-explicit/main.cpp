@@ -134,12 +134,14 @@ int main(int argc, char** argv) {
     const ClothKernels kernels = kit::student_cloth_kernels();
     app.section("the spring in 3-D", [&] { spring_in_3d(app); });
     const auto springs = app.section("coupled springs", [&] { return coupled_springs(app, scene, kernels); });
-    app.section("the favourite scheme", [&] { favourite_scheme(app, scene, kernels); });
-    if (springs) app.section("the explicit loop", [&] {
+    app.section("the favourite scheme", {"stability", "resolution"},
+                [&] { favourite_scheme(app, scene, kernels); });
+    app.section("the explicit loop", {"energy", "strain"}, [&] {
+      if (!springs) throw kit::NotImplemented("ex 6.2", "cloth_springs.hpp");
       const auto runs = explicit_loop(app, scene, *springs, kernels, run);
       super_elastic(app, scene, *springs, kernels, run, runs.at(run.integrator));
       garment(app, scene, runs.at(run.integrator), kit::cloth_output_options(flags, app.options(), run));
     });
-    app.section("mesh dependence", [&] { mesh_dependence(app, kernels); });
+    app.section("mesh dependence", {"mesh"}, [&] { mesh_dependence(app, kernels); });
   });
 }

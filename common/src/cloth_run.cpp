@@ -51,7 +51,7 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
     progress.add(1);
     // The explosion test measures every structural spring: every 8 steps is soon enough to stop
     // a run that grows by orders of magnitude, and keeps the test's cost a few percent of a step's.
-    const bool exploded = k % 8 == 0 && (cloth.blew_up() || cloth.max_strain() > exploded_strain);
+    const bool exploded = (k % 8 == 0 || k == steps) && (cloth.blew_up() || cloth.max_strain() > exploded_strain);
     if (exploded) {
       rec.exploded_at = cloth.t;
       break;

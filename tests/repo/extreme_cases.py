@@ -31,6 +31,13 @@ CASES = [  # (chapter, flags, expected exit code)
     ("05-sprites", ["--scene", str(pathlib.Path(__file__).parent / "sprite_scenes" / "extreme.toml")], 0),
     ("05-sprites", ["--scene", str(pathlib.Path(__file__).parent / "sprite_scenes" / "extreme.toml"),
                     "--integrator", "euler", "--width", "7680", "--height", "4320"], 2),  # km-wide sprites: hours
+    # Cloth: a step that explodes at once (figures and frames of an exploded sheet), the smallest
+    # sheet, explicit Euler past its limit over the sphere, and a sheet too large for the machine.
+    ("06-cloth-explicit", ["--dt", "1", "--frames", "3"], 0),
+    ("06-cloth-explicit", ["--resolution", "2", "--frames", "2", "--t-end", "0.5"], 0),
+    ("06-cloth-explicit", ["--scene", "drape", "--integrator", "explicit-euler", "--dt", "0.01", "--t-end", "1",
+                           "--frames", "5"], 0),
+    ("06-cloth-explicit", ["--resolution", "100000"], 2),
 ]
 
 

@@ -25,8 +25,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 import exercises  # noqa: E402
 
-CHAPTERS = ["01-free-fall", "02-spring-stability", "03-rk2", "04-adaptive-rk", "05-sprites"]
-FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1", "5.1"}
+CHAPTERS = ["01-free-fall", "02-spring-stability", "03-rk2", "04-adaptive-rk", "05-sprites", "06-cloth-explicit"]
+FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1", "5.1", "6.1", "6.2"}
 
 
 def write_tree(path, solved):
@@ -111,6 +111,11 @@ def expectations(tree):
                  lambda s: near(s["emission"][0]["drawn_mean"], 6, 0.1)
                  and near(s["emission"][0]["drawn_half_width"], 0.6, 0.05)),
             ],
+            "06-cloth-explicit": [
+                ("the student's spring force (ex 6.1) checked", lambda s: s["spring"]["third"] < 1e-12),
+                ("the student's network (ex 6.2) counted", lambda s: s["springs"]["total"] == s["springs"]["expected"]),
+                ("the runs wait for the step (ex 6.3)", lambda s: "integrators" not in s and "stability" not in s),
+            ],
         }
     if tree == "none":
         return {
@@ -122,6 +127,8 @@ def expectations(tree):
             "04-adaptive-rk": [("the kit's own DOPRI5 runs", lambda s: s["detail"]["rhs_evals"] == 985)],
             "05-sprites": [("the integrators' trade, and no frame", lambda s: near(
                 s["integrators"]["euler"]["fitted_order"], 1, 0.05) and "contact_sheet" not in s.get("figures", {}))],
+            "06-cloth-explicit": [("every figure waits", lambda s: {"stability", "energy", "mesh"}
+                                   <= set(s.get("figures_waiting", [])) and not s.get("figures"))],
         }
     return {
         "01-free-fall": [
@@ -147,6 +154,10 @@ def expectations(tree):
             ("the emission and the scene wait for ex 5.1; the student's over compositing (ex 5.3) is taken",
              lambda s: "counts" not in s and "emission" not in s
              and not any("5.3" in e["reason"] for e in s.get("skipped", []))),
+        ],
+        "06-cloth-explicit": [
+            ("without the network (ex 6.2) nothing runs past the spring force",
+             lambda s: "spring" not in s and "springs" not in s and "integrators" not in s),
         ],
     }
 

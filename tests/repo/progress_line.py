@@ -120,6 +120,13 @@ def main(argv):
                                         "--out", out], stdout_tty=True, stderr_tty=False)
         check("chapter 5, stderr a pipe: no bar", code == 0 and "the scene  [" not in err and "\r" not in err)
 
+    # 6. Chapter 6's runs: seconds of cloth steps; the bar names the section it counts.
+    cloth = pathlib.Path(argv[1]) / "06-cloth-explicit"
+    code, _, _, terminal = run(cloth, ["--no-plot", "--t-end", "8"], stdout_tty=True, stderr_tty=True)
+    check("chapter 6 on a terminal: exit 0", code == 0)
+    check("chapter 6 on a terminal: a progress bar while the cloth runs",
+          "the explicit loop  [" in terminal and "%" in terminal)
+
     print(f"{len(problems)} problems")
     return 1 if problems else 0
 

@@ -1,0 +1,25 @@
+#pragma once
+// Ex 6.4: a node that ends a step inside a fixed sphere is put back on its surface, and its
+// velocity answers the contact (lecture, "Vêtement = Tissu + collisions"):
+//   - position: projected radially onto the surface, x ← c + r n with n = (x − c)/|x − c|;
+//   - normal velocity: an inward one (v·n < 0) is removed (an inelastic contact), v_n ← 0;
+//   - friction (Coulomb): the tangential velocity loses μ times the normal speed removed,
+//     |Δv_t| = min(|v_t|, μ |v·n|); it stops when that is all of it (static friction).
+// A node already outside, or moving outward, keeps its velocity.
+#include <kit/cloth.hpp>
+#include <kit/cloth_scene.hpp>
+#include <kit/not_implemented.hpp>
+
+namespace kit {
+
+/// Resolves every node of x [m] (velocities v [m/s]) that lies strictly inside `sphere`.
+/// A node exactly at the centre has no radial direction: push it out along +y. Returns the
+/// number of nodes that were inside.
+inline long collide_sphere(NodeArray& x, NodeArray& v, const SphereCollider& sphere) {
+  long inside = 0;
+  // TODO(ex 6.4): for each node with |x − c| < r: n = (x − c)/|x − c| (or +y at c), x = c + r n; if v·n < 0 remove it and shrink v_t by μ|v·n|
+  throw kit::NotImplemented("ex 6.4", "cloth_sphere.hpp");
+  return inside;
+}
+
+}  // namespace kit

@@ -1,0 +1,21 @@
+#pragma once
+// Ex 6.1: the force of one cloth spring on its end a (lecture, "Simulation de tissus", in 3-D):
+//   F_a = K (L0 − |x|) x/|x|  −  μ ((v_a − v_b)·x̂) x̂,     x = x_a − x_b,  x̂ = x/|x|
+// Hooke's law along the spring, plus damping of the rate at which its length changes: only the
+// relative velocity ALONG the spring is damped, so a sheet falling as a whole is not slowed. The
+// force on b is −F_a (Newton's third law).
+#include <kit/cloth.hpp>
+#include <kit/not_implemented.hpp>
+
+namespace kit {
+
+/// Force [N] on node a of a spring from a (at xa [m], moving at va [m/s]) to b, with rest length
+/// `rest` [m], stiffness family.stiffness [N/m] and damping family.damping [N·s/m]. A spring of
+/// zero length has no direction: its force is zero.
+inline Vector3 spring_force(const Vector3& xa, const Vector3& xb, const Vector3& va, const Vector3& vb, double rest,
+                            const SpringFamily& family) {
+  // TODO(ex 6.1): x = xa − xb, l = |x|; F = [K (L0 − l) − μ (va − vb)·x̂] x̂, and zero when l = 0
+  throw kit::NotImplemented("ex 6.1", "cloth_spring_force.hpp");
+}
+
+}  // namespace kit
