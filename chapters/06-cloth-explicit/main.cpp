@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
     const fs::path scenes = fs::path(KIT_CHAPTER_SOURCE_DIR) / "scenes";
     const auto scene = kit::apply_cloth_flags(kit::load_cloth_scene_flag(flags, scenes), flags);
     const kit::ClothRunOptions run = kit::cloth_run_options(scene);
-    kit::announce_run(app.report(), "runs", "The runs", kit::estimate_cloth_chapter(scene, run),
+    kit::announce_run(app.report(), "runs", "Chapter 6", kit::estimate_cloth_chapter(scene, run),
                       kit::describe_cloth_flags(scene), {.max_bytes = kit::machine_memory()});
     app.summary()["scene"] = kit::cloth_scene_summary(scene);
     const ClothKernels kernels = kit::student_cloth_kernels();

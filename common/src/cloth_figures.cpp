@@ -76,8 +76,10 @@ Figure cloth_strain_figure(const ClothRecording& free, const ClothRecording& lim
     p.add({rec == &free ? "springs alone" : fmt::format("with Provot's strain limit of {:.3g}%", 100 * max_strain), t,
            strain, "lines", (rec == &free ? look::unstable : look::stable) + " lw 2"});
   }
-  if (!free.samples.empty())
+  if (!free.samples.empty()) {
     p.line("the limit", {0, free.samples.back().t}, {100 * max_strain, 100 * max_strain}, look::guide);
+    p.commands.push_back(fmt::format("set xrange [0:{}]", free.samples.back().t));
+  }
   return fig;
 }
 
