@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include <kit/cloth_scene_file.hpp>
+#include <kit/scene_flag.hpp>
 #include <kit/usage.hpp>
 
 namespace kit {
@@ -25,14 +26,6 @@ ClothIntegrator integrator_named(const std::string& name) {
   throw UsageError(fmt::format("--integrator: '{}' is not one of {}", name, integrator_names()));
 }
 
-std::string shipped_scenes(const std::filesystem::path& dir) {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-    if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return fmt::format("{}", fmt::join(names, ", "));
-}
 
 nlohmann::json vector_json(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
@@ -61,14 +54,7 @@ void add_cloth_flags(ChapterApp& app, ClothFlags& f) {
 }
 
 ClothScene load_cloth_scene_flag(const ClothFlags& flags, const std::filesystem::path& scenes_dir) {
-  const bool is_path = flags.scene.find('/') != std::string::npos || flags.scene.ends_with(".toml");
-  const std::filesystem::path file =
-      is_path ? std::filesystem::path(flags.scene) : scenes_dir / (flags.scene + ".toml");
-  if (!is_path && !std::filesystem::exists(file))
-    throw UsageError(
-        fmt::format("--scene: no scene named '{}'; the shipped scenes are {} (or give a .toml path)",
-                    flags.scene, shipped_scenes(scenes_dir)));
-  return load_cloth_scene(file);
+  return load_cloth_scene(scene_file(flags.scene, scenes_dir));
 }
 
 ClothScene apply_cloth_flags(ClothScene scene, const ClothFlags& flags) {

@@ -7,6 +7,7 @@
 
 #include <kit/sprite_scene_file.hpp>
 #include <kit/sprite_texture.hpp>
+#include <kit/scene_flag.hpp>
 #include <kit/usage.hpp>
 
 namespace kit {
@@ -17,14 +18,6 @@ Integrator integrator_named(const std::string& name) {
   throw UsageError(fmt::format("--integrator: '{}' is not one of euler, symplectic, midpoint, exact", name));
 }
 
-std::string shipped_scenes(const std::filesystem::path& dir) {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-    if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return fmt::format("{}", fmt::join(names, ", "));
-}
 }  // namespace
 
 void add_sprite_flags(ChapterApp& app, SpriteFlags& f) {
@@ -45,12 +38,7 @@ void add_sprite_flags(ChapterApp& app, SpriteFlags& f) {
 }
 
 SpriteScene load_scene_flag(const SpriteFlags& flags, const std::filesystem::path& scenes_dir) {
-  const bool is_path = flags.scene.find('/') != std::string::npos || flags.scene.ends_with(".toml");
-  const std::filesystem::path file = is_path ? std::filesystem::path(flags.scene) : scenes_dir / (flags.scene + ".toml");
-  if (!is_path && !std::filesystem::exists(file))
-    throw UsageError(fmt::format("--scene: no scene named '{}'; the shipped scenes are {} (or give a .toml path)",
-                                 flags.scene, shipped_scenes(scenes_dir)));
-  return load_sprite_scene(file);
+  return load_sprite_scene(scene_file(flags.scene, scenes_dir));
 }
 
 double check_textures(const SpriteScene& scene) {
