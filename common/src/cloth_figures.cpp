@@ -127,7 +127,7 @@ Figure cloth_resolution_figure(const std::vector<StabilityAtResolution>& rows, c
     p->logx = p->logy = true;
     p->commands.push_back("set xrange [12:90]");
     p->commands.push_back("set xtics (16, 32, 64)");
-    p->commands.push_back("set offsets 0, 0, graph 0.1, graph 0.1");
+    p->commands.push_back("set format x '%g'");  // the node counts, not powers of ten
   }
   dt.points("measured", n, measured, look::symplectic_euler + " pt 7 ps 1.4");
   dt.points("2/ω_{max}", n, predicted, look::prediction + " pt 6 ps 2");
@@ -153,6 +153,7 @@ Figure cloth_mesh_figure(const std::map<Hanging, std::vector<Sag>>& sags, double
                                 look::midpoint + " lw 2"};
   p.commands.push_back("set xrange [6:80]");
   p.commands.push_back("set xtics (8, 16, 32, 64)");
+  p.commands.push_back("set format x '%g'");  // the node counts, not powers of ten
   double lo = INFINITY, hi = 0;
   for (const auto& [hanging, curve] : sags) {
     std::vector<double> n, drop;
