@@ -54,7 +54,7 @@ void favourite_scheme(ChapterApp& app, const ClothScene& scene, ClothKernels ker
   const auto cases = kit::stability_cases(scene, 16, kernels, 1e-4);
   app.report().print("3. The largest stable step at 16 nodes across, every spring at the structural K. "
                      "Stable: no mode grows. Undamped, explicit Euler and midpoint grow at every Δt; damped "
-                     "along the springs (μ = cK), explicit Euler holds for Δt < c while every mode is "
+                     "along the springs (μ = τK), explicit Euler holds for Δt < τ while every mode is "
                      "underdamped:\n");
   kit::print_stability_table(app.report(), cases);
   app.figure(kit::cloth_stability_figure(cases, scene.name));
@@ -111,10 +111,11 @@ void mesh_dependence(ChapterApp& app, ClothKernels kernels) {
   const kit::MeshDependence m = kit::measure_mesh_dependence(kernels);
   app.report().print("7. A 1 m sheet at rest, 0.2 kg/m², structural and shear springs of 50 N/m:\n");
   kit::print_mesh_table(app.report(), m.sags);
-  app.report().say("mesh_limit", "Top edge, same k: the drop converges at order {order:.2f} to {limit:.3f} "
-                   "mm, {remaining:.2g}% away at N = 64: with square cells a spring's K [N/m] is already the "
-                   "sheet's stretch modulus. Point pins have no limit.\n", {{"order", m.top_edge.order},
-                   {"limit", 1e3 * m.top_edge.limit}, {"remaining", 100 * m.top_edge.remaining}});
+  const kit::Convergence& c = m.top_edge;
+  app.report().say("mesh_limit", "Top edge, same k: the drop {verdict}. With square cells a spring's K [N/m] "
+                   "is the sheet's stretch modulus; point pins have no limit.\n",
+                   {{"verdict", kit::describe(c, 1e3, "mm")}, {"order", c.order}, {"limit", 1e3 * c.limit},
+                    {"remaining", 100 * c.remaining}, {"converges", c.converges}});
   app.figure(kit::cloth_mesh_figure(m.sags, m.top_edge.limit));
 }
 }  // namespace

@@ -11,9 +11,11 @@ namespace kit {
 double deepest_penetration(const ClothScene& scene, const NodeArray& x) {
   double deepest = 0;
   if (scene.ground) deepest = std::max(deepest, scene.ground->height - x.col(1).minCoeff());
-  for (const SphereCollider& sphere : scene.spheres)
+  for (const SphereCollider& sphere : scene.spheres) {
+    const double radius = contact_radius(scene.grid, sphere);  // the sphere as the cloth meets it
     for (Eigen::Index i = 0; i < x.rows(); ++i)
-      deepest = std::max(deepest, sphere.radius - (x.row(i).transpose() - sphere.center).norm());
+      deepest = std::max(deepest, radius - (x.row(i).transpose() - sphere.center).norm());
+  }
   return deepest;
 }
 
@@ -26,11 +28,6 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
   // The step count is rounded to the nearest whole number of steps; samples and frames fall at
   // the step nearest their time.
   const long steps = std::max(1L, std::lround(options.t_end / options.dt));
-  const auto sample = [&] {
-    const double strain = cloth.max_strain();
-    rec.samples.push_back({cloth.t, cloth.kinetic(), cloth.potential(), strain});
-    rec.peak_strain = std::max(rec.peak_strain, strain);
-  };
   // Sample s of `count` falls at the step nearest s·t_end/count; when there are more samples
   // than steps, a step takes the samples that fall on it once.
   struct Schedule {
@@ -42,23 +39,30 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
     }
   };
   Schedule samples{options.samples, steps}, frames{options.frames, steps};
-  sample();
+  rec.samples.push_back({0, cloth.kinetic(), cloth.potential(), cloth.max_strain()});
+  rec.peak_strain = rec.samples.back().strain;
   if (options.frames > 0) rec.frames.push_back(cloth.x);
   ProgressCounter progress;
   for (long k = 1; k <= steps; ++k) {
     cloth.step(options.integrator, options.dt);
     ++rec.steps;
     progress.add(1);
-    // The explosion test measures every structural spring: every 8 steps is soon enough to stop
-    // a run that grows by orders of magnitude, and keeps the test's cost a few percent of a step's.
-    const bool exploded = (k % 8 == 0 || k == steps) && (cloth.blew_up() || cloth.max_strain() > exploded_strain);
-    if (exploded) {
+    const bool sample_due = samples.due(k), frame_due = frames.due(k);
+    // The strain is measured (over every structural spring) every 8 steps, and before anything is
+    // recorded: often enough to stop a run that grows by orders of magnitude, and to record no
+    // exploded state, at a few percent of a step's cost.
+    if (k % 8 != 0 && k != steps && !sample_due && !frame_due) continue;
+    const double strain = cloth.blew_up() ? INFINITY : cloth.max_strain();
+    rec.peak_strain = std::max(rec.peak_strain, strain);
+    if (strain > exploded_strain) {
       rec.exploded_at = cloth.t;
+      // The energy it reached, when it is still a number: the table shows how far it went.
+      if (!cloth.blew_up()) rec.samples.push_back({cloth.t, cloth.kinetic(), cloth.potential(), strain});
       break;
     }
     rec.deepest = std::max(rec.deepest, deepest_penetration(run_scene, cloth.x));
-    if (samples.due(k)) sample();
-    if (frames.due(k)) rec.frames.push_back(cloth.x);
+    if (sample_due) rec.samples.push_back({cloth.t, cloth.kinetic(), cloth.potential(), strain});
+    if (frame_due) rec.frames.push_back(cloth.x);
   }
   rec.work = cloth.work;
   return rec;
@@ -100,8 +104,10 @@ StrainComparison compare_strain_limit(const ClothScene& scene, const Springs& sp
   ClothRecording other = run_cloth(limited, springs, kernels, options);
   StrainComparison c;
   c.max_strain = limited.strain_limit->max_strain;
-  c.free = scene.strain_limit ? std::move(other) : as_run;
-  c.limited = scene.strain_limit ? as_run : std::move(other);
+  ClothRecording kept = as_run;  // the scene's run without its frames: the comparison needs none
+  kept.frames.clear();
+  c.free = scene.strain_limit ? std::move(other) : std::move(kept);
+  c.limited = scene.strain_limit ? std::move(kept) : std::move(other);
   return c;
 }
 

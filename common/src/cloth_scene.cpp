@@ -15,9 +15,23 @@ namespace {
 long resolve(int coordinate, int count) { return coordinate < 0 ? long(count) + coordinate : coordinate; }
 }  // namespace
 
+namespace {
+// The scene on an nx × ny grid, its pins checked against it.
+ClothScene on_grid(const ClothScene& scene, int nx, int ny, int n) {
+  ClothScene out = scene;
+  out.grid.nx = nx, out.grid.ny = ny;
+  for (const Pin& pin : scene.pins) {
+    const long i = resolve(pin.i, nx), j = resolve(pin.j, ny);
+    if (i < 0 || i >= nx || j < 0 || j >= ny)
+      throw UsageError(fmt::format("resolution {}: pin [{}, {}] lies outside the {} × {} grid", n, pin.i, pin.j,
+                                   nx, ny));
+  }
+  return out;
+}
+}  // namespace
+
 ClothScene at_resolution(const ClothScene& scene, int n) {
   if (n < 2) throw UsageError(fmt::format("resolution {}: a sheet needs at least 2 nodes across", n));
-  ClothScene out = scene;
   const ClothGrid& g = scene.grid;
   // Square cells: dy = height/(ny − 1) as close as possible to dx = width/(nx − 1).
   const double rows = std::round(g.height / g.width * (n - 1));
@@ -25,15 +39,15 @@ ClothScene at_resolution(const ClothScene& scene, int n) {
   if (!(rows <= most_rows))
     throw UsageError(fmt::format("resolution {}: a {} m × {} m sheet would need {} rows of nodes", n, g.width,
                                  g.height, rows + 1));
-  out.grid.nx = n;
-  out.grid.ny = std::max(2, int(rows) + 1);
-  for (const Pin& pin : scene.pins) {
-    const long i = resolve(pin.i, n), j = resolve(pin.j, out.grid.ny);
-    if (i < 0 || i >= n || j < 0 || j >= out.grid.ny)
-      throw UsageError(fmt::format("resolution {}: pin [{}, {}] lies outside the {} × {} grid", n, pin.i,
-                                   pin.j, n, out.grid.ny));
-  }
-  return out;
+  return on_grid(scene, n, std::max(2, int(rows) + 1), n);
+}
+
+ClothScene at_longest_side(const ClothScene& scene, int n) {
+  if (n < 2) throw UsageError(fmt::format("resolution {}: a sheet needs at least 2 nodes across", n));
+  const ClothGrid& g = scene.grid;
+  const double other = std::round(std::min(g.width, g.height) / std::max(g.width, g.height) * (n - 1));
+  const int short_side = std::max(2, int(other) + 1);
+  return g.width >= g.height ? on_grid(scene, n, short_side, n) : on_grid(scene, short_side, n, n);
 }
 
 long pinned_node(const ClothGrid& grid, const Pin& pin) {

@@ -148,7 +148,7 @@ ClothScene springs_only(const ClothScene& scene) {
 
 StabilityAtResolution stability_at(const ClothScene& scene, int n, ClothKernels kernels,
                                    ClothIntegrator integrator, double damping_time, long steps) {
-  ClothScene bare = springs_only(at_resolution(scene, n));
+  ClothScene bare = springs_only(at_longest_side(scene, n));
   for (auto* family : {&bare.springs.structural, &bare.springs.shear, &bare.springs.bend})
     if (*family) (*family)->damping = damping_time * (*family)->stiffness;
   const Springs springs = kernels.build_springs(bare.grid, bare.springs);
@@ -185,7 +185,7 @@ std::vector<StabilityCase> stability_cases(const ClothScene& scene, int n, Cloth
     for (ClothIntegrator integrator : {ClothIntegrator::symplectic_euler, ClothIntegrator::rk4})
       run(names[families - 1], families, integrator, 0);
   for (ClothIntegrator integrator : all_cloth_integrators)
-    run(fmt::format("all three, μ = {:.2g} s·k", damping_time), 3, integrator, damping_time);
+    run(fmt::format("all three, μ = {:.2g} s·K", damping_time), 3, integrator, damping_time);
   return cases;
 }
 

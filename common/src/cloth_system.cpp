@@ -20,6 +20,7 @@ ClothSystem::ClothSystem(const ClothScene& scene, Springs springs, ClothKernels 
     if (std::find(pins_.begin(), pins_.end(), node) == pins_.end()) pins_.push_back(node);
     inverse_mass_[node] = 0;
   }
+  pinned_x_.resize(long(pins_.size()), 3);
   if (!scene.spheres.empty() && !kernels.collide_sphere)
     throw std::invalid_argument("the scene has spheres but no sphere response was given");
   forces_.count_into(&work);
@@ -65,8 +66,18 @@ void ClothSystem::step(ClothIntegrator integrator, double dt) {
       break;
   }
   t += dt;
-  contacts();
+  // The strain limit first: it moves nodes, and the contacts after it are the last word, so no
+  // node ends a step inside a collider.
   if (scene_.strain_limit) limit_strain(dt);
+  contacts();
+}
+
+double contact_radius(const ClothGrid& grid, const SphereCollider& sphere) {
+  // Nodes at radius R joined by an edge of length d (at most a cell's diagonal, unstretched)
+  // keep the edge's midpoint at √(R² − d²/4) from the centre: R = √(r² + d²/4) keeps the whole
+  // edge out of the sphere of radius r. The padding R − r never exceeds d/2.
+  const double diagonal2 = grid.dx() * grid.dx() + grid.dy() * grid.dy();
+  return std::sqrt(sphere.radius * sphere.radius + diagonal2 / 4);
 }
 
 void ClothSystem::contacts() {
@@ -75,7 +86,7 @@ void ClothSystem::contacts() {
     const GroundCollider& ground = *scene_.ground;
     work.ground_tests += x.rows();
     for (Eigen::Index i = 0; i < x.rows(); ++i) {
-      if (!(x(i, 1) < ground.height)) continue;
+      if (!(x(i, 1) < ground.height) || inverse_mass_[i] == 0) continue;  // a pin stays where it is
       ++work.contacts;
       x(i, 1) = ground.height;
       const double vn = v(i, 1);
@@ -87,19 +98,18 @@ void ClothSystem::contacts() {
     }
   }
   for (const SphereCollider& sphere : scene_.spheres) {
-    // Nodes on the sphere join by straight edges, which cut into it by up to the sagitta of the
-    // longest edge, a cell's diagonal d: d²/(8r). The nodes rest that much outside, so that the
-    // cloth's triangles, not only its nodes, stay out of the sphere.
     SphereCollider padded = sphere;
-    const double diagonal2 = scene_.grid.dx() * scene_.grid.dx() + scene_.grid.dy() * scene_.grid.dy();
-    padded.radius += diagonal2 / (8 * sphere.radius);
+    padded.radius = contact_radius(scene_.grid, sphere);
     work.sphere_tests += x.rows();
+    // Ex 6.4 sees every node; a pin it moved goes back where it is held.
+    for (std::size_t k = 0; k < pins_.size(); ++k) pinned_x_.row(long(k)) = x.row(pins_[k]);
     work.contacts += kernels_.collide_sphere(x, v, padded);
+    for (std::size_t k = 0; k < pins_.size(); ++k) x.row(pins_[k]) = pinned_x_.row(long(k)), v.row(pins_[k]).setZero();
   }
 }
 
 void ClothSystem::limit_strain(double dt) {
-  // Provot 1995: a structural or shear spring longer than (1 + τ) L0 is shortened to that
+  // Provot 1995: a structural or shear spring longer than (1 + ε_max) L0 is shortened to that
   // length, each free end moving half the excess along the spring (a pinned end does not move,
   // its partner moves all of it). Velocities change by the same displacement / dt, so the next
   // step does not undo the correction.

@@ -70,3 +70,22 @@ TEST_CASE("ex 6.4: a node at the centre is pushed out along +y", "[grade][06-clo
   CHECK(x(0, 1) == Approx(3.5));
   CHECK(x(0, 0) == Approx(2.0));
 }
+
+TEST_CASE("ex 6.4: the response holds for any normal, not only +y", "[grade][06-cloth-explicit][ex6.4]") {
+  auto rng = kit::test::random_engine();
+  const kit::SphereCollider sphere{{0.2, -0.4, 0.7}, 1.3, 0.6};
+  for (int trial = 0; trial < 200; ++trial) {
+    // A direction away from +y and an inward velocity with a tangential part.
+    Vector3 n(kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 0.3), kit::test::uniform(rng, -1, 1));
+    n.normalize();
+    Vector3 t = n.cross(Vector3(0, 1, 0)).normalized();
+    const double vn = -kit::test::uniform(rng, 0.1, 3), vt = kit::test::uniform(rng, 0, 3);
+    const Vector3 velocity = vn * n + vt * t;
+    kit::NodeArray x = row(sphere.center + kit::test::uniform(rng, 0.1, 0.99) * sphere.radius * n), v = row(velocity);
+    kit::collide_sphere(x, v, sphere);
+    const Vector3 expected = std::max(0.0, vt - sphere.friction * -vn) * t;
+    INFO("trial " << trial << ": n = " << n.transpose() << ", v_n = " << vn << ", v_t = " << vt);
+    CHECK((x.row(0).transpose() - (sphere.center + sphere.radius * n)).norm() < 1e-12);
+    CHECK((v.row(0).transpose() - expected).norm() < 1e-12);
+  }
+}

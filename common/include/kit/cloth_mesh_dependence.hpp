@@ -46,6 +46,9 @@ struct Convergence {
   bool converges = false;  ///< the successive differences shrink (ratio > 1)
 };
 Convergence richardson(double coarse, double middle, double fine);
+/// "converges at order 1.03 to 12.48 mm, 0.8% away at N = 64", or that it does not; the limit
+/// shown times `unit` in `unit_name`.
+std::string describe(const Convergence& c, double unit, const std::string& unit_name);
 
 /// The chapter's experiment: every way of holding the sheet at N = 8, 16, 32, 64, and
 /// Richardson's estimate for the top edge from N = 16, 32, 64.

@@ -32,7 +32,7 @@ struct ClothRecording {
   std::vector<NodeArray> frames;  ///< positions at the frame times, while the cloth holds
   long steps = 0;
   double exploded_at = -1;        ///< [s]: when the cloth blew up (< 0: it never did)
-  double peak_strain = 0;         ///< largest structural stretch over the run
+  double peak_strain = 0;         ///< largest structural stretch measured (every 8 steps)
   double deepest = 0;             ///< deepest a node ever sat inside a collider after a step [m]
   ClothWork work;
 };
@@ -67,7 +67,8 @@ StrainComparison compare_strain_limit(const ClothScene& scene, const Springs& sp
 /// conservative cost of one spring in one force evaluation [ns].
 RunEstimate estimate_cloth_chapter(const ClothScene& scene, const ClothRunOptions& options, double stage_ns = 6.0);
 
-/// The deepest any node of x lies inside the scene's ground or spheres [m] (0: none inside).
+/// The deepest any node of x lies inside the scene's ground or spheres [m] (0: none inside),
+/// each sphere taken at contact_radius, where the contacts put the nodes.
 double deepest_penetration(const ClothScene& scene, const NodeArray& x);
 
 }  // namespace kit

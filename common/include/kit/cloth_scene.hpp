@@ -75,6 +75,11 @@ struct ClothScene {
 /// to square as the sheet allows (at least 2). Pins keep their meaning (negative = from the end).
 ClothScene at_resolution(const ClothScene& scene, int n);
 
+/// The scene with n nodes along its longer side and cells as close to square as the shorter
+/// allows (at least 2): at most n² nodes whatever the sheet's proportions (the chapter's
+/// stability experiments). UsageError when a pin falls outside.
+ClothScene at_longest_side(const ClothScene& scene, int n);
+
 /// Node index of a pin on the scene's grid.
 long pinned_node(const ClothGrid& grid, const Pin& pin);
 

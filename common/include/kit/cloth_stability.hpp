@@ -29,7 +29,8 @@ OmegaMax omega_max(const Springs& springs, const Eigen::VectorXd& masses, const 
 ///   x'' = −ω² x − c ω² x'.
 /// Undamped (c = 0): symplectic Euler 2/ω_max, RK4 2√2/ω_max, explicit Euler and midpoint none
 /// (0: they grow at every Δt). With c > 0 explicit Euler needs Δt < c for the underdamped modes
-/// and Δt < 2/(c ω²) for the overdamped ones (ANCHORS: "stable iff Δt < μ/K").
+/// (ANCHORS: "stable iff Δt < μ/K") and Δt < 2/|λ| for the overdamped ones, λ the faster real
+/// root of λ² + cω²λ + ω² = 0 (about 2/(cω²) when cω ≫ 2).
 double predicted_dt_max(ClothIntegrator integrator, double omega_max, double damping_time = 0);
 
 /// A measured Δt_max: the bisection's last stable and first unstable steps.
@@ -51,7 +52,8 @@ MeasuredDtMax measure_dt_max(const ClothScene& scene, const Springs& springs, Cl
 /// damping, so that the only motion is the springs' (the linearisation the prediction is made on).
 ClothScene springs_only(const ClothScene& scene);
 
-/// Δt_max of one integrator on the scene's sheet at resolution n, its springs damped with
+/// Δt_max of one integrator on the scene's sheet at n nodes along its longer side
+/// (at_longest_side), its springs damped with
 /// μ = damping_time·K (undamped at 0): the prediction from ω_max at rest and the measurement, with the spring-force evaluations one simulated second costs at
 /// 0.9 Δt_max (the explicit cost, ∝ N³ for a fixed sheet).
 struct StabilityAtResolution {

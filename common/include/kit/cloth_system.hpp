@@ -24,15 +24,19 @@ struct ClothKernels {
   SphereResponse collide_sphere = nullptr;        ///< needed when the scene has spheres
 };
 
+/// The radius at which the cloth meets `sphere` [m]: √(r² + d²/4), d a cell's diagonal, so that
+/// an edge of unstretched length ≤ d between two nodes on it does not cut into the sphere.
+double contact_radius(const ClothGrid& grid, const SphereCollider& sphere);
+
 class ClothSystem {
  public:
   /// The scene's sheet at rest, with the given springs (ex 6.2 builds them). Throws
   /// std::invalid_argument when a kernel the scene needs is missing.
   ClothSystem(const ClothScene& scene, Springs springs, ClothKernels kernels);
 
-  /// One step of dt [s], then the ground, the spheres and the strain limit, in that order. A
-  /// sphere is met at its radius plus the sagitta of a cell's diagonal, d²/(8r), so that the
-  /// straight edges between nodes on it stay outside it too.
+  /// One step of dt [s], then the strain limit, the ground and the spheres, in that order. A
+  /// sphere is met at contact_radius, so that the straight edges between nodes on it stay
+  /// outside it too. Contacts never move a pinned node.
   void step(ClothIntegrator integrator, double dt);
 
   NodeArray x, v;  ///< positions [m] and velocities [m/s], row i = node i
@@ -62,6 +66,7 @@ class ClothSystem {
   ClothKernels kernels_;
   std::vector<std::int32_t> pins_;
   Eigen::VectorXd inverse_mass_;  ///< 0 for pinned nodes: they never accelerate
+  NodeArray pinned_x_;  ///< the pins' positions, kept across the student's sphere response
   NodeArray f_, k1x_, k1v_, k2x_, k2v_, k3x_, k3v_, k4x_, k4v_, mid_x_, mid_v_;  ///< scratch
 };
 
