@@ -42,6 +42,7 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
   rec.samples.push_back({0, cloth.kinetic(), cloth.potential(), cloth.max_strain()});
   rec.peak_strain = rec.samples.back().strain;
   if (options.frames > 0) rec.frames.push_back(cloth.x);
+  const ProgressWeight weight(stages(options.integrator));  // an RK4 step is four force passes
   ProgressCounter progress;
   for (long k = 1; k <= steps; ++k) {
     cloth.step(options.integrator, options.dt);
@@ -76,6 +77,7 @@ RunEstimate estimate_cloth_chapter(const ClothScene& scene, const ClothRunOption
   double stages_per_step = stages(options.integrator);  // the strain-limit comparison run
   for (ClothIntegrator integrator : all_cloth_integrators) stages_per_step += stages(integrator);
   e.steps = 5 * steps;
+  e.work = steps * stages_per_step;  // the progress line's units: force passes
   e.seconds_per_step = (springs * stages_per_step * stage_ns * 1e-9 + 5 * nodes * 40e-9) / 5;
   // State, masses and 11 scratch arrays of 3 doubles a node; 37 bytes a spring in the list and
   // 24 more in the force pass's copy; the kept frames, 24 bytes a node each.
@@ -86,6 +88,9 @@ RunEstimate estimate_cloth_chapter(const ClothScene& scene, const ClothRunOption
 ClothRuns run_each_integrator(const ClothScene& scene, const Springs& springs, ClothKernels kernels,
                               const ClothRunOptions& options) {
   ClothRuns runs;
+  // The section's progress line counts force evaluations per spring pass: these four runs and
+  // compare_strain_limit's one after them (estimate_cloth_chapter's work).
+  ProgressTask::set_total(estimate_cloth_chapter(scene, options).work);
   for (ClothIntegrator integrator : all_cloth_integrators) {
     ClothRunOptions one = options;
     one.integrator = integrator;
