@@ -20,9 +20,9 @@ std::map<Pair, kit::SpringKind> expected_pairs(int nx, int ny, const kit::Spring
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
         for (auto [di, dj] : offsets) {
-          const int i2 = i + di, j2 = j + dj;
-          if (i2 < 0 || i2 >= nx || j2 < 0 || j2 >= ny) continue;
-          const long a = long(j) * nx + i, b = long(j2) * nx + i2;
+          const int column = i + di, row = j + dj;
+          if (column < 0 || column >= nx || row < 0 || row >= ny) continue;
+          const long a = long(j) * nx + i, b = long(row) * nx + column;
           pairs[{std::min(a, b), std::max(a, b)}] = kind;
         }
   };
