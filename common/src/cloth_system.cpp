@@ -65,6 +65,10 @@ void ClothSystem::step(ClothIntegrator integrator, double dt) {
       v += dt / 6 * (k1v_ + 2 * k2v_ + 2 * k3v_ + k4v_);
       break;
   }
+  finish_step(dt);
+}
+
+void ClothSystem::finish_step(double dt) {
   t += dt;
   // The strain limit first: it moves nodes, and the contacts after it are the last word, so no
   // node ends a step inside a collider.

@@ -38,6 +38,9 @@ class ClothSystem {
   /// sphere is met at contact_radius, so that the straight edges between nodes on it stay
   /// outside it too. Contacts never move a pinned node.
   void step(ClothIntegrator integrator, double dt);
+  /// What follows every step, whatever moved x and v (chapter 7's implicit steps too): t += dt,
+  /// then the strain limit, the ground and the spheres.
+  void finish_step(double dt);
 
   NodeArray x, v;  ///< positions [m] and velocities [m/s], row i = node i
   double t = 0;    ///< [s]
@@ -48,6 +51,8 @@ class ClothSystem {
   const ClothForces& forces() const { return forces_; }
   const Eigen::VectorXd& masses() const { return forces_.masses(); }
   const std::vector<std::int32_t>& pins() const { return pins_; }
+  /// 1/m per node [1/kg], 0 for a pinned node.
+  const Eigen::VectorXd& inverse_masses() const { return inverse_mass_; }
   double kinetic() const { return kinetic_energy(masses(), v); }
   double potential() const { return forces_.potential_energy(x); }
   /// The largest relative stretch of the structural springs (or, without them, of any family).

@@ -1,0 +1,189 @@
+// Chapter 7's implicit steps (cloth_implicit_step.hpp).
+#include <kit/cloth_implicit_step.hpp>
+
+#include <algorithm>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <fmt/format.h>
+
+#include <kit/cloth_liu.hpp>
+
+namespace kit {
+
+const char* flag_name(ImplicitMethod method) {
+  switch (method) {
+    case ImplicitMethod::linearised: return "implicit-euler";
+    case ImplicitMethod::newton: return "newton";
+    case ImplicitMethod::liu: return "liu";
+  }
+  return "?";
+}
+
+const char* display_name(ImplicitMethod method) {
+  switch (method) {
+    case ImplicitMethod::linearised: return "implicit Euler (linearised)";
+    case ImplicitMethod::newton: return "implicit Euler (Newton)";
+    case ImplicitMethod::liu: return "Liu et al. 2013";
+  }
+  return "?";
+}
+
+const char* flag_name(ImplicitSolver solver) { return solver == ImplicitSolver::cg ? "cg" : "pcg"; }
+const char* display_name(ImplicitSolver solver) {
+  return solver == ImplicitSolver::cg ? "Eigen CG" : "filtered PCG";
+}
+
+ImplicitWork& ImplicitWork::operator+=(const ImplicitWork& o) {
+  steps += o.steps, solves += o.solves, cg_iterations += o.cg_iterations;
+  max_cg_iterations = std::max(max_cg_iterations, o.max_cg_iterations);
+  unconverged_solves += o.unconverged_solves, newton_iterations += o.newton_iterations;
+  newton_unconverged += o.newton_unconverged, local_global += o.local_global;
+  factorizations += o.factorizations, blocks += o.blocks, assemblies += o.assemblies;
+  filtered_nodes += o.filtered_nodes, worst_residual = std::max(worst_residual, o.worst_residual);
+  return *this;
+}
+
+BackwardEulerStepper::BackwardEulerStepper(const ClothSystem& cloth, ImplicitMethod method,
+                                           const ImplicitSettings& settings, ImplicitKernels kernels)
+    : method_(method),
+      settings_(settings),
+      kernels_(kernels),
+      matrix_(cloth.springs(), cloth.x.rows(), cloth.pins()),
+      stiffness_(cloth.springs().size()),
+      filters_(std::size_t(cloth.x.rows()), Matrix3::Identity()) {
+  if (method == ImplicitMethod::liu) throw std::invalid_argument("Liu et al.'s method has its own stepper");
+  if (!kernels.stiffness_block) throw std::invalid_argument("no spring stiffness block (ex 7.1) was given");
+  if (settings.solver == ImplicitSolver::pcg && !kernels.pcg)
+    throw std::invalid_argument("no filtered PCG (ex 7.3) was given");
+}
+
+void BackwardEulerStepper::jacobian(const ClothSystem& cloth, const NodeArray& x) {
+  const Springs& springs = cloth.springs();
+  for (std::size_t s = 0; s < springs.size(); ++s)
+    stiffness_[s] = kernels_.stiffness_block(x.row(springs.a[s]), x.row(springs.b[s]), springs.rest[s],
+                                             springs.stiffness[s], settings_.clamp);
+  work.blocks += long(springs.size());
+}
+
+void BackwardEulerStepper::set_filters(const ClothSystem& cloth, const NodeArray& f) {
+  // Baraff & Witkin §5.3: a pinned node has no free direction (S = 0); a node resting on the
+  // ground and pressed into it moves only along it (S = I − nnᵀ, n = +y). A node the forces
+  // pull off the ground is free again.
+  std::fill(filters_.begin(), filters_.end(), Matrix3::Identity());
+  if (const auto& ground = cloth.scene().ground)
+    for (Eigen::Index i = 0; i < cloth.x.rows(); ++i)
+      if (cloth.x(i, 1) <= ground->height && f(i, 1) <= 0) {
+        filters_[std::size_t(i)](1, 1) = 0;
+        ++work.filtered_nodes;
+      }
+  for (const std::int32_t p : cloth.pins()) filters_[std::size_t(p)].setZero();
+}
+
+void BackwardEulerStepper::filter(Eigen::VectorXd& w) const {
+  for (std::size_t i = 0; i < filters_.size(); ++i) {
+    const Eigen::Index k = 3 * Eigen::Index(i);
+    w.segment<3>(k) = filters_[i] * w.segment<3>(k);
+  }
+}
+
+Eigen::VectorXd BackwardEulerStepper::solve(Eigen::VectorXd b, double tolerance) {
+  ++work.solves;
+  PcgResult r;
+  if (settings_.solver == ImplicitSolver::pcg) {
+    r = kernels_.pcg(matrix_.matrix, b, filters_, tolerance, settings_.max_cg_iterations);
+  } else {
+    matrix_.constrain(b);
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg;
+    cg.setTolerance(tolerance);
+    cg.setMaxIterations(settings_.max_cg_iterations);
+    cg.compute(matrix_.matrix);
+    r.x = cg.solve(b);
+    r.iterations = int(cg.iterations());
+    r.residual = cg.error();
+    r.converged = cg.info() == Eigen::Success;
+  }
+  work.cg_iterations += r.iterations;
+  work.max_cg_iterations = std::max(work.max_cg_iterations, long(r.iterations));
+  if (!r.converged) ++work.unconverged_solves;
+  work.worst_residual = std::max(work.worst_residual, r.residual);
+  if (r.negative_curvature)
+    throw SolveFailed(fmt::format("negative curvature (cᵀAc ≤ 0) at CG iteration {}: A is not positive "
+                                  "definite", r.iterations));
+  if (!r.x.allFinite() || !(r.residual <= 1))
+    throw SolveFailed(fmt::format("the linear solve diverged: relative residual {:.3g} after {} iterations",
+                                  r.residual, r.iterations));
+  return r.x;
+}
+
+NodeArray BackwardEulerStepper::velocity_change(ClothSystem& cloth, double h) {
+  const Springs& springs = cloth.springs();
+  jacobian(cloth, cloth.x);
+  cloth.forces()(cloth.x, cloth.v, f_);
+  matrix_.assemble(springs, cloth.x, stiffness_, cloth.masses(), cloth.scene().drag, h);
+  ++work.assemblies;
+  // b = h (f_n + h ∂f/∂x v_n)   (ERRATA 14, the symmetric form)
+  Eigen::VectorXd b;
+  stiffness_times(springs, stiffness_, cloth.v, b);
+  b = h * (flatten(f_) + h * b);
+  if (settings_.solver == ImplicitSolver::pcg) set_filters(cloth, f_);
+  Eigen::VectorXd dv = solve(b, settings_.cg_tolerance);
+  last_newton_residual = 0;
+  if (method_ == ImplicitMethod::newton) dv = newton(cloth, std::move(dv), b, h);
+  NodeArray out;
+  unflatten(dv, out);
+  return out;
+}
+
+Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd dv, const Eigen::VectorXd& b0,
+                                             double h) {
+  const Springs& springs = cloth.springs();
+  const Eigen::VectorXd& m = cloth.masses();
+  const bool filtered = settings_.solver == ImplicitSolver::pcg;
+  ++work.newton_iterations;  // the linearised step was the first
+  // g(Δv) = M Δv − h f(x_n + h (v_n + Δv), v_n + Δv), over the free directions only.
+  Eigen::VectorXd g(dv.size());
+  const auto residual = [&] {
+    NodeArray dv_nodes;
+    unflatten(dv, dv_nodes);
+    v1_ = cloth.v + dv_nodes;
+    x1_ = cloth.x + h * v1_;
+    cloth.forces()(x1_, v1_, f_);
+    g = -h * flatten(f_);
+    for (Eigen::Index i = 0; i < m.size(); ++i) g.segment<3>(3 * i) += m[i] * dv.segment<3>(3 * i);
+    if (filtered) filter(g);
+    else
+      for (const std::int32_t p : cloth.pins()) g.segment<3>(3 * p).setZero();
+    return g.norm();
+  };
+  Eigen::VectorXd scale_vector = b0;
+  if (filtered) filter(scale_vector);
+  const double scale = std::max(scale_vector.norm(), 1e-300);
+  last_newton_residual = residual() / scale;
+  for (int k = 1; k < settings_.iterations && last_newton_residual > settings_.newton_tolerance; ++k) {
+    jacobian(cloth, x1_);
+    matrix_.assemble(springs, x1_, stiffness_, m, cloth.scene().drag, h);
+    ++work.assemblies;
+    // Each correction to 1e-6 of the residual: Newton converges as fast as the solves allow.
+    dv += solve(-g, 1e-6);
+    ++work.newton_iterations;
+    last_newton_residual = residual() / scale;
+  }
+  if (last_newton_residual > settings_.newton_tolerance) ++work.newton_unconverged;
+  return dv;
+}
+
+void BackwardEulerStepper::step(ClothSystem& cloth, double h) {
+  const NodeArray dv = velocity_change(cloth, h);
+  cloth.v += dv;
+  cloth.x += h * cloth.v;
+  ++work.steps;
+  cloth.finish_step(h);
+}
+
+std::unique_ptr<ImplicitStepper> make_implicit_stepper(const ClothSystem& cloth, ImplicitMethod method,
+                                                       const ImplicitSettings& settings, ImplicitKernels kernels) {
+  if (method == ImplicitMethod::liu) return std::make_unique<LiuStepper>(cloth, settings.iterations);
+  return std::make_unique<BackwardEulerStepper>(cloth, method, settings, kernels);
+}
+
+}  // namespace kit
