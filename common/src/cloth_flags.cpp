@@ -31,7 +31,7 @@ nlohmann::json vector_json(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
 
 }  // namespace
 
-void add_cloth_flags(ChapterApp& app, ClothFlags& f) {
+void add_cloth_flags(ChapterApp& app, ClothFlags& f, const std::vector<std::string>& more_integrators) {
   app.cli()
       .add_option("--scene", f.scene,
                   "scene: a name under chapters/06-cloth-explicit/scenes/ or a .toml path")
@@ -39,8 +39,10 @@ void add_cloth_flags(ChapterApp& app, ClothFlags& f) {
       ->capture_default_str();
   std::vector<std::string> names;
   for (ClothIntegrator i : all_cloth_integrators) names.emplace_back(flag_name(i));
+  names.insert(names.end(), more_integrators.begin(), more_integrators.end());
+  const std::string default_one = more_integrators.empty() ? "the scene's" : more_integrators.front();
   app.cli()
-      .add_option("--integrator", f.integrator, fmt::format("{} (default: the scene's)", integrator_names()))
+      .add_option("--integrator", f.integrator, fmt::format("{} (default: {})", fmt::join(names, ", "), default_one))
       ->check(CLI::IsMember(names))
       ->type_name("NAME");
   app.add_real("--dt", f.dt, "time step Δt [s] (default: the scene's)", positive(1));

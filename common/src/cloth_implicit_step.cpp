@@ -66,16 +66,27 @@ void BackwardEulerStepper::jacobian(const ClothSystem& cloth, const NodeArray& x
 }
 
 void BackwardEulerStepper::set_filters(const ClothSystem& cloth, const NodeArray& f) {
-  // Baraff & Witkin §5.3: a pinned node has no free direction (S = 0); a node resting on the
-  // ground and pressed into it moves only along it (S = I − nnᵀ, n = +y). A node the forces
-  // pull off the ground is free again.
+  // Baraff & Witkin §5.3: a pinned node has no free direction (S = 0); a node resting on a
+  // collider and pressed into it moves only along its surface (S = I − nnᵀ, n the outward
+  // normal) inside the solve, so the step itself cannot push it in. A node the forces pull off
+  // is free again. "Resting" allows 1% of a sphere's radius: a step along the surface ends a
+  // little outside a sphere, (h v)²/2R.
   std::fill(filters_.begin(), filters_.end(), Matrix3::Identity());
+  const auto hold = [&](Eigen::Index i, const Vector3& n) {
+    filters_[std::size_t(i)] = filters_[std::size_t(i)] * (Matrix3::Identity() - n * n.transpose());
+    ++work.filtered_nodes;
+  };
   if (const auto& ground = cloth.scene().ground)
     for (Eigen::Index i = 0; i < cloth.x.rows(); ++i)
-      if (cloth.x(i, 1) <= ground->height && f(i, 1) <= 0) {
-        filters_[std::size_t(i)](1, 1) = 0;
-        ++work.filtered_nodes;
-      }
+      if (cloth.x(i, 1) <= ground->height && f(i, 1) <= 0) hold(i, Vector3::UnitY());
+  for (const SphereCollider& sphere : cloth.scene().spheres) {
+    const double radius = contact_radius(cloth.scene().grid, sphere);
+    for (Eigen::Index i = 0; i < cloth.x.rows(); ++i) {
+      const Vector3 r = cloth.x.row(i).transpose() - sphere.center;
+      const double d = r.norm();
+      if (d > 0 && d <= 1.01 * radius && f.row(i).dot(r) <= 0) hold(i, r / d);
+    }
+  }
   for (const std::int32_t p : cloth.pins()) filters_[std::size_t(p)].setZero();
 }
 
@@ -163,8 +174,9 @@ Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd
     jacobian(cloth, x1_);
     matrix_.assemble(springs, x1_, stiffness_, m, cloth.scene().drag, h);
     ++work.assemblies;
-    // Each correction to 1e-6 of the residual: Newton converges as fast as the solves allow.
-    dv += solve(-g, 1e-6);
+    // Each correction solved to --cg-tol of the residual: the iterations converge at that rate
+    // or faster (the clamped Jacobian is not exact under compression: not quadratically).
+    dv += solve(-g, settings_.cg_tolerance);
     ++work.newton_iterations;
     last_newton_residual = residual() / scale;
   }

@@ -42,10 +42,20 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
   rec.samples.push_back({0, cloth.kinetic(), cloth.potential(), cloth.max_strain()});
   rec.peak_strain = rec.samples.back().strain;
   if (options.frames > 0) rec.frames.push_back(cloth.x);
-  const ProgressWeight weight(stages(options.integrator));  // an RK4 step is four force passes
+  const ProgressWeight weight(options.implicit ? 1 : stages(options.integrator));  // an RK4 step: 4 passes
   ProgressCounter progress;
+  std::unique_ptr<ImplicitStepper> implicit;
+  if (options.implicit)
+    implicit = make_implicit_stepper(cloth, *options.implicit, options.implicit_settings, options.implicit_kernels);
   for (long k = 1; k <= steps; ++k) {
-    cloth.step(options.integrator, options.dt);
+    try {
+      if (implicit) implicit->step(cloth, options.dt);
+      else cloth.step(options.integrator, options.dt);
+    } catch (const SolveFailed& e) {
+      rec.exploded_at = cloth.t + options.dt;  // the step that could not be taken
+      rec.failure = e.what();
+      break;
+    }
     ++rec.steps;
     progress.add(1);
     const bool sample_due = samples.due(k), frame_due = frames.due(k);
@@ -66,6 +76,7 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
     if (frame_due) rec.frames.push_back(cloth.x);
   }
   rec.work = cloth.work;
+  if (implicit) rec.implicit = implicit->work;
   return rec;
 }
 

@@ -38,6 +38,16 @@ CASES = [  # (chapter, flags, expected exit code)
     ("06-cloth-explicit", ["--scene", "drape", "--integrator", "explicit-euler", "--dt", "0.01", "--t-end", "1",
                            "--frames", "5"], 0),
     ("06-cloth-explicit", ["--resolution", "100000"], 2),
+    # Implicit cloth: a one-second step, the smallest sheet, an explicit method at the implicit
+    # step (a reported divergence), the clamp off (a reported solver failure or a run), Liu and
+    # Newton at their extremes, and a sheet too large for the machine.
+    ("07-cloth-implicit", ["--dt", "1", "--frames", "3"], 0),
+    ("07-cloth-implicit", ["--resolution", "2", "--frames", "2", "--t-end", "0.5"], 0),
+    ("07-cloth-implicit", ["--integrator", "symplectic-euler", "--dt", "0.0333", "--t-end", "1", "--frames", "3"], 0),
+    ("07-cloth-implicit", ["--no-clamp", "--solver", "cg", "--t-end", "1", "--frames", "3"], 0),
+    ("07-cloth-implicit", ["--integrator", "newton", "--iterations", "1", "--cg-tol", "0.5", "--t-end", "0.5"], 0),
+    ("07-cloth-implicit", ["--integrator", "liu", "--iterations", "1", "--dt", "1", "--t-end", "3"], 0),
+    ("07-cloth-implicit", ["--resolution", "100000"], 2),
 ]
 
 

@@ -25,8 +25,9 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
 import exercises  # noqa: E402
 
-CHAPTERS = ["01-free-fall", "02-spring-stability", "03-rk2", "04-adaptive-rk", "05-sprites", "06-cloth-explicit"]
-FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1", "5.1", "6.1", "6.2"}
+CHAPTERS = ["01-free-fall", "02-spring-stability", "03-rk2", "04-adaptive-rk", "05-sprites", "06-cloth-explicit",
+            "07-cloth-implicit"]
+FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1", "5.1", "6.1", "6.2", "7.1"}
 
 
 def write_tree(path, solved):
@@ -116,6 +117,11 @@ def expectations(tree):
                 ("the student's network (ex 6.2) counted", lambda s: s["springs"]["total"] == s["springs"]["expected"]),
                 ("the runs wait for the step (ex 6.3)", lambda s: "integrators" not in s and "stability" not in s),
             ],
+            "07-cloth-implicit": [
+                ("the student's Jacobian (ex 7.1) checked", lambda s: s["jacobian"]["fd"] < 1e-6),
+                ("the system waits for ex 7.2, the runs for ex 6.3 and 7.3",
+                 lambda s: "system" not in s and "stiffness" not in s and "run" not in s),
+            ],
         }
     if tree == "none":
         return {
@@ -128,6 +134,8 @@ def expectations(tree):
             "05-sprites": [("the integrators' trade, and no frame", lambda s: near(
                 s["integrators"]["euler"]["fitted_order"], 1, 0.05) and "contact_sheet" not in s.get("figures", {}))],
             "06-cloth-explicit": [("every figure waits", lambda s: {"stability", "energy", "mesh"}
+                                   <= set(s.get("figures_waiting", [])) and not s.get("figures"))],
+            "07-cloth-implicit": [("every figure waits", lambda s: {"stiffness", "damping", "trade", "solver"}
                                    <= set(s.get("figures_waiting", [])) and not s.get("figures"))],
         }
     return {
@@ -158,6 +166,10 @@ def expectations(tree):
         "06-cloth-explicit": [
             ("without the network (ex 6.2) nothing runs past the spring force",
              lambda s: "spring" not in s and "springs" not in s and "integrators" not in s),
+        ],
+        "07-cloth-implicit": [
+            ("without the Jacobian (ex 7.1) and the network (ex 6.2) nothing runs",
+             lambda s: "jacobian" not in s and "system" not in s and "run" not in s),
         ],
     }
 

@@ -3,6 +3,7 @@
 // many nodes, how large the frames. The scene gives the defaults; a flag overrides them.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -23,8 +24,9 @@ struct ClothFlags {
 };
 
 /// Adds --scene --integrator --dt --t-end --resolution --frames --width --height, each range
-/// checked when the flags are parsed.
-void add_cloth_flags(ChapterApp& app, ClothFlags& flags);
+/// checked when the flags are parsed. `more_integrators`: names --integrator also accepts
+/// (chapter 7's implicit methods), which apply_cloth_flags leaves to the caller.
+void add_cloth_flags(ChapterApp& app, ClothFlags& flags, const std::vector<std::string>& more_integrators = {});
 
 /// The scene --scene names: scenes_dir/NAME.toml for a bare name, else the path as given.
 /// UsageError for an unknown name (listing the shipped ones) or a bad file (file:line: key).

@@ -34,7 +34,7 @@ struct ImplicitSettings {
   int max_cg_iterations = 2000; ///< products with A per solve
   int iterations = 10;          ///< Newton: the most iterations; Liu: local/global iterations
   bool clamp = true;            ///< (1 − L0/l) ≥ 0 in the stiffness blocks: A stays positive definite
-  double newton_tolerance = 1e-9;  ///< ‖g‖ relative to ‖h f_n‖
+  double newton_tolerance = 1e-6;  ///< ‖g‖ relative to ‖h f_n‖
 };
 
 /// What the implicit steps computed, counted (tests check these, never times).

@@ -1,0 +1,296 @@
+// Chapter 7 end to end and in process: the assembled stiffness matches finite differences of the
+// forces, A is symmetric and definite with the clamp and the no-clamp failure is caught, a stiff
+// sheet stays bounded and loses energy at h = 1/30 s, the step is first order and agrees with
+// the explicit methods as h → 0, filtered pins are exact, Liu's iterations converge to Newton's
+// backward Euler, CG counts are reported and bounded, the chapter prints what was measured, and
+// bad input exits 2.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <kit/cloth_implicit_experiments.hpp>
+#include <kit/cloth_liu.hpp>
+#include <kit/cloth_scene_file.hpp>
+
+#include "cloth_implicit_wiring.hpp"
+#include "cloth_kernels.hpp"
+#include "process.hpp"
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+const std::string binary = KIT_CHAPTER_BINARY;
+const fs::path scenes = fs::path(KIT_CHAPTER_SOURCE_DIR) / ".." / "06-cloth-explicit" / "scenes";
+
+json run_chapter(std::vector<std::string> args, const fs::path& out) {
+  args.insert(args.end(), {"--json", "--out", out.string()});
+  const auto result = kit::test::run_process(binary, args);
+  INFO(result.err);
+  REQUIRE(result.exit_code == 0);
+  return json::parse(result.out);
+}
+
+kit::ClothScene sheet(double stiffness, int n = 8) {
+  return kit::test_sheet(kit::load_cloth_scene(scenes / "flag.toml"), n, stiffness);
+}
+
+kit::ClothRunOptions implicit_run(kit::ImplicitMethod method, double h, double t_end,
+                                  kit::ImplicitSolver solver = kit::ImplicitSolver::pcg) {
+  kit::ClothRunOptions run;
+  run.implicit = method;
+  run.implicit_settings.solver = solver;
+  run.implicit_kernels = kit::student_implicit_kernels();
+  run.dt = h, run.t_end = t_end, run.frames = 1;
+  return run;
+}
+
+/// The cloth a few hundredths of a second into its swing (RK4, fine steps): not at rest.
+kit::ClothSystem swinging(const kit::ClothScene& scene, double t = 0.05) {
+  kit::ClothSystem cloth(scene, kit::build_springs(scene.grid, scene.springs), kit::student_cloth_kernels());
+  for (int k = 0; k < 500; ++k) cloth.step(kit::ClothIntegrator::rk4, t / 500);
+  return cloth;
+}
+}  // namespace
+
+TEST_CASE("implicit cloth: (M − A)/h² is ∂f/∂x, matching central differences of the forces to 1e-6", "[implicit]") {
+  const kit::ClothScene scene = sheet(1e3);
+  kit::ClothSystem cloth = swinging(scene);
+  const kit::Springs& springs = cloth.springs();
+  std::vector<kit::Matrix3> blocks(springs.size());
+  for (std::size_t s = 0; s < springs.size(); ++s)
+    blocks[s] = kit::spring_stiffness_block(cloth.x.row(springs.a[s]), cloth.x.row(springs.b[s]), springs.rest[s],
+                                            springs.stiffness[s], false);
+  const double h = 0.01;
+  kit::ImplicitMatrix matrix(springs, cloth.x.rows(), {});
+  matrix.assemble(springs, cloth.x, blocks, cloth.masses(), std::nullopt, h);  // undamped: no ∂f/∂v
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> any(-1, 1);
+  for (int trial = 0; trial < 5; ++trial) {
+    kit::NodeArray w(cloth.x.rows(), 3), f_plus, f_minus;
+    for (Eigen::Index i = 0; i < w.size(); ++i) w.data()[i] = any(random);
+    const double eps = 1e-6;
+    const kit::NodeArray v = kit::NodeArray::Zero(w.rows(), 3);
+    cloth.forces()(cloth.x + eps * w, v, f_plus);
+    cloth.forces()(cloth.x - eps * w, v, f_minus);
+    const Eigen::VectorXd numeric = kit::flatten(f_plus - f_minus) / (2 * eps);
+    Eigen::VectorXd mass_w = kit::flatten(w);
+    for (Eigen::Index i = 0; i < cloth.masses().size(); ++i) mass_w.segment<3>(3 * i) *= cloth.masses()[i];
+    const Eigen::VectorXd assembled = (mass_w - matrix.matrix * kit::flatten(w)) / (h * h);
+    CHECK((assembled - numeric).norm() <= 1e-6 * numeric.norm());
+  }
+}
+
+TEST_CASE("implicit cloth: A is symmetric and definite with the clamp; without it CG reports negative curvature",
+          "[implicit]") {
+  const kit::ClothScene scene = kit::load_cloth_scene(scenes / "flag.toml");
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  const kit::AssemblyCheck c = kit::check_assembly(scene, springs, kit::student_implicit_kernels(), 1.0 / 30);
+  CHECK(c.asymmetry < 1e-15);
+  CHECK(c.matrix_difference < 1e-13);
+  CHECK(c.rhs_difference < 1e-13);
+  CHECK(c.definite);
+  CHECK_FALSE(c.unclamped_definite);
+  CHECK(c.unclamped_solve.negative_curvature);
+  CHECK_FALSE(c.unclamped_solve.converged);
+  CHECK(c.unclamped_solve.x.allFinite());
+}
+
+TEST_CASE("implicit cloth: with the clamp off on a crumpling sheet, the run stops with the solver's reason", "[implicit]") {
+  kit::ClothScene scene = sheet(1e4);
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  scene.grid.width *= 0.6;  // the sheet starts at 60% of its springs' rest lengths across
+  kit::ClothRunOptions run = implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 1);
+  run.implicit_settings.clamp = false;
+  const kit::ClothRecording rec = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run);
+  CHECK(rec.exploded_at > 0);
+  CHECK_THAT(rec.failure, Catch::Contains("negative curvature"));
+  run.implicit_settings.clamp = true;
+  const kit::ClothRecording clamped = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run);
+  CHECK(clamped.exploded_at < 0);
+  CHECK(clamped.failure.empty());
+}
+
+TEST_CASE("implicit cloth: K = 1e6 N/m at h = 1/30 s stays bounded and its energy never grows", "[implicit]") {
+  const kit::ClothScene scene = sheet(1e6);
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  for (const auto method : {kit::ImplicitMethod::linearised, kit::ImplicitMethod::newton}) {
+    kit::ClothRunOptions run = implicit_run(method, 1.0 / 30, 1);
+    run.samples = 30;  // every step
+    INFO(kit::flag_name(method));
+    const kit::ClothRecording rec = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run);
+    REQUIRE(rec.exploded_at < 0);
+    CHECK(rec.peak_strain < 0.01);
+    CHECK(rec.samples.back().total() < rec.samples.front().total());
+    // Solved exactly, Newton's backward Euler loses energy at every step; the linearised step
+    // may gain a little at one (the lecture's "perte de la stabilité inconditionnelle"), by
+    // under 0.1% of the energy, while it falls over the run.
+    run.implicit_settings.cg_tolerance = 1e-10;
+    const kit::ClothRecording exact = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run);
+    REQUIRE(exact.samples.size() == 31);
+    const double allowed = method == kit::ImplicitMethod::newton ? 1e-9 : 1e-3 * std::abs(exact.samples[0].total());
+    for (std::size_t k = 1; k < exact.samples.size(); ++k)
+      CHECK(exact.samples[k].total() <= exact.samples[k - 1].total() + allowed);
+    CHECK(exact.samples.back().total() < exact.samples.front().total());
+  }
+  // Symplectic Euler at the same step explodes at once.
+  kit::ClothRunOptions run;
+  run.integrator = kit::ClothIntegrator::symplectic_euler, run.dt = 1.0 / 30, run.t_end = 1;
+  CHECK(kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run).exploded_at >= 0);
+}
+
+TEST_CASE("implicit cloth: as h → 0 the implicit step agrees with RK4, its error halving with h", "[implicit]") {
+  const kit::ClothScene scene = sheet(1e2);
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  kit::ClothRunOptions fine;
+  fine.integrator = kit::ClothIntegrator::rk4, fine.dt = 2e-4, fine.t_end = 0.2, fine.frames = 1;
+  const kit::NodeArray reference = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), fine).frames.back();
+  std::vector<double> errors;
+  for (const double h : {0.2 / 32, 0.2 / 64, 0.2 / 128, 0.2 / 256}) {
+    kit::ClothRunOptions run = implicit_run(kit::ImplicitMethod::linearised, h, 0.2);
+    run.implicit_settings.cg_tolerance = 1e-10;
+    const kit::NodeArray x = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run).frames.back();
+    errors.push_back((x - reference).norm());
+  }
+  for (std::size_t k = 1; k < errors.size(); ++k) CHECK(errors[k - 1] / errors[k] > 1.6);
+  CHECK(errors[2] / errors[3] == Approx(2).epsilon(0.1));  // first order once h is small
+  CHECK(errors.back() < 1e-2 * (reference - scene.grid.rest_positions()).norm());
+}
+
+TEST_CASE("implicit cloth: the filtered PCG holds pins exactly; Eigen's CG holds them by elimination", "[implicit]") {
+  kit::ClothScene scene = sheet(1e4);
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  const kit::NodeArray rest = scene.grid.rest_positions();
+  for (const auto solver : {kit::ImplicitSolver::pcg, kit::ImplicitSolver::cg}) {
+    const kit::ClothRecording rec =
+        kit::run_cloth(scene, springs, kit::student_cloth_kernels(), implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 1, solver));
+    REQUIRE(rec.exploded_at < 0);
+    for (const kit::Pin& pin : scene.pins) {
+      const long node = kit::pinned_node(scene.grid, pin);
+      CHECK(rec.frames.back().row(node) == rest.row(node));  // exactly: zero displacement
+    }
+    CHECK((rec.frames.back() - rest).norm() > 0.01);  // while the rest of the sheet moved
+  }
+}
+
+TEST_CASE("implicit cloth: Liu's local/global iterations converge to Newton's backward-Euler step", "[implicit]") {
+  const kit::ClothScene scene = sheet(1e3);
+  for (const double h : {1.0 / 30, 1.0 / 120}) {
+    kit::ClothSystem newton_cloth = swinging(scene), liu_cloth = swinging(scene);
+    kit::ImplicitSettings exact;
+    exact.cg_tolerance = 1e-12, exact.iterations = 50, exact.newton_tolerance = 1e-10;
+    kit::BackwardEulerStepper newton(newton_cloth, kit::ImplicitMethod::newton, exact, kit::student_implicit_kernels());
+    newton.step(newton_cloth, h);
+    CHECK(newton.work.newton_unconverged == 0);
+    std::vector<double> gaps;
+    for (const int iterations : {10, 100, 1000, 10000}) {
+      kit::ClothSystem cloth = liu_cloth;
+      kit::LiuStepper liu(cloth, iterations);
+      liu.step(cloth, h);
+      CHECK(liu.work.local_global == iterations);
+      CHECK(liu.work.factorizations == 1);
+      gaps.push_back((cloth.x - newton_cloth.x).norm() / (newton_cloth.x - liu_cloth.x).norm());
+    }
+    INFO("h = " << h << ": " << gaps[0] << " " << gaps[1] << " " << gaps[2] << " " << gaps[3]);
+    for (std::size_t k = 1; k < gaps.size(); ++k) CHECK(gaps[k] < gaps[k - 1]);
+    // Relative to the step's own displacement; the larger step converges more slowly.
+    CHECK(gaps.back() < (h > 0.02 ? 1e-4 : 1e-6));
+  }
+}
+
+TEST_CASE("implicit cloth: CG iterations are counted, reported and bounded by the system's size", "[implicit]") {
+  const kit::ClothScene scene = sheet(1e4);
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  const long unknowns = 3 * scene.grid.nodes();
+  for (const auto solver : {kit::ImplicitSolver::pcg, kit::ImplicitSolver::cg}) {
+    const kit::ClothRecording rec =
+        kit::run_cloth(scene, springs, kit::student_cloth_kernels(), implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 1, solver));
+    const kit::ImplicitWork& w = rec.implicit;
+    CHECK(w.steps == 30);
+    CHECK(w.solves == 30);
+    CHECK(w.assemblies == 30);
+    CHECK(w.blocks == 30 * long(springs.size()));
+    CHECK(w.unconverged_solves == 0);
+    CHECK(w.max_cg_iterations > 0);
+    CHECK(w.max_cg_iterations <= unknowns);
+    CHECK(w.cg_iterations <= 30 * w.max_cg_iterations);
+    CHECK(w.worst_residual <= 1e-3);
+  }
+}
+
+TEST_CASE("implicit cloth: on the drape at h = 1/30 s, filters hold the sheet on the sphere; CG with contacts after "
+          "the step lets it through", "[implicit]") {
+  const kit::ClothScene scene = kit::load_cloth_scene(scenes / "drape.toml");
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  const double top = scene.spheres.at(0).center.y() + scene.spheres.at(0).radius;
+  double highest[2];
+  for (const auto solver : {kit::ImplicitSolver::pcg, kit::ImplicitSolver::cg}) {
+    const kit::ClothRecording rec = kit::run_cloth(scene, springs, kit::student_cloth_kernels(),
+                                                   implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 3, solver));
+    REQUIRE(rec.exploded_at < 0);
+    CHECK(rec.deepest < 1e-9);  // after each step's contacts, whichever solver
+    highest[int(solver)] = rec.frames.back().col(1).maxCoeff();
+    if (solver == kit::ImplicitSolver::pcg) CHECK(rec.implicit.filtered_nodes > 0);
+  }
+  CHECK(highest[int(kit::ImplicitSolver::pcg)] > top);        // draped over the sphere
+  CHECK(highest[int(kit::ImplicitSolver::cg)] < 0.1 * top);   // fallen through it to the ground
+}
+
+TEST_CASE("chapter 7: the printed numbers are the ones measured") {
+  kit::test::TempDir out("ch07");
+  const json j = run_chapter({"--no-plot"}, out.path());
+  CHECK(j["jacobian"]["fd"].get<double>() < 1e-6);
+  CHECK(j["jacobian"]["clamped"].get<double>() >= -1e-12);
+  CHECK(j["jacobian"]["unclamped"].get<double>() < -0.1);
+  CHECK(j["system"]["matrix"].get<double>() < 1e-13);
+  CHECK(j["system"]["definite"] == "positive definite");
+  CHECK(j["system"]["negative_curvature"].get<bool>());
+  // Symplectic Euler's limit falls like K^(−1/2): ×1/√10 per decade, within 5%.
+  const json& rows = j["stiffness"];
+  double previous = 0;
+  for (const json& row : rows) {
+    CHECK(row["dt_max"].get<double>() == Approx(row["predicted"].get<double>()).epsilon(0.1));
+    if (previous > 0 && row["dt_max"].get<double>() != previous)
+      CHECK(row["dt_max"].get<double>() / previous == Approx(1 / std::sqrt(10.0)).epsilon(0.05));
+    previous = row["dt_max"].get<double>();
+    const std::string method = row["method"];
+    if (method.rfind("liu", 0) != 0) CHECK(row["stable"].get<bool>());  // linearised and Newton: all K
+  }
+  // The trade: each method's error falls as its step does; implicit Euler is first order.
+  std::map<std::string, std::vector<double>> errors;
+  for (const json& row : j["trade"]) {
+    CHECK_FALSE(row["failed"].get<bool>());
+    errors[row["method"]].push_back(row["error"]);
+  }
+  for (const char* method : {"symplectic-euler", "rk4", "implicit-euler", "newton"})
+    for (std::size_t k = 1; k < errors[method].size(); ++k) CHECK(errors[method][k] < errors[method][k - 1]);
+  const auto& implicit = errors["implicit-euler"];
+  CHECK(implicit[implicit.size() - 2] / implicit.back() == Approx(2).epsilon(0.2));
+  for (const json& row : j["solver"]) CHECK(row["unconverged"] == 0);
+  CHECK(j["run"]["steps"] == 90);
+  CHECK(j["run"]["deepest"].get<double>() < 1e-9);
+  CHECK(j["implicit_work"]["filtered"].get<long>() > 0);
+}
+
+TEST_CASE("chapter 7: an explicit method at the implicit step is reported as diverging, not a crash") {
+  kit::test::TempDir out("ch07-explicit");
+  const json j = run_chapter({"--no-plot", "--integrator", "symplectic-euler", "--dt", "0.0333", "--t-end", "1"},
+                             out.path());
+  REQUIRE(j["divergences"].size() == 1);
+  CHECK(j["divergences"][0]["run"] == "symplectic-euler");
+}
+
+TEST_CASE("chapter 7: bad flags are usage errors that name the flag") {
+  kit::test::expect_usage_errors(binary, {
+      {{"--solver", "lu"}, "--solver"},
+      {{"--cg-tol", "0"}, "--cg-tol"},
+      {{"--cg-tol", "1"}, "--cg-tol"},
+      {{"--iterations", "0"}, "--iterations"},
+      {{"--integrator", "verlet"}, "--integrator"},
+      {{"--dt", "0"}, "--dt"},
+      {{"--scene", "tablecloth"}, "drape"},
+  });
+}
