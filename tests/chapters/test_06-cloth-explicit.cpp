@@ -186,7 +186,8 @@ TEST_CASE("cloth: the drape keeps every node out of the sphere and above the gro
   const kit::ClothScene scene = kit::load_cloth_scene(scenes / "drape.toml");
   const auto kernels = kit::student_cloth_kernels();
   const kit::Springs springs = kernels.build_springs(scene.grid, scene.springs);
-  kit::ClothRunOptions run{scene.integrator, scene.dt, std::min(scene.t_end, 1.5), 0, 50, true};
+  kit::ClothRunOptions run;
+  run.integrator = scene.integrator, run.dt = scene.dt, run.t_end = std::min(scene.t_end, 1.5), run.samples = 50;
   const kit::ClothRecording rec = kit::run_cloth(scene, springs, kernels, run);
   CHECK(rec.exploded_at < 0);
   CHECK(rec.work.contacts > 0);
@@ -226,7 +227,8 @@ TEST_CASE("cloth: just below Δt_max the flag hangs; just above it, it explodes"
   const kit::Springs springs = kernels.build_springs(scene.grid, scene.springs);
   const auto r = kit::stability_at(scene, scene.grid.nx, kernels, kit::ClothIntegrator::symplectic_euler);
   for (double factor : {0.9, 1.1}) {
-    kit::ClothRunOptions run{kit::ClothIntegrator::symplectic_euler, factor * r.measured.estimate(), 1.0, 0, 20, false};
+    kit::ClothRunOptions run;
+    run.dt = factor * r.measured.estimate(), run.t_end = 1.0, run.samples = 20, run.strain_limit = false;
     const auto rec = kit::run_cloth(scene, springs, kernels, run);
     INFO("Δt = " << factor << " Δt_max");
     CHECK((rec.exploded_at >= 0) == (factor > 1));
