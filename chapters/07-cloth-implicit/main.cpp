@@ -1,7 +1,6 @@
-// Chapter 7: cloth with implicit integration (lecture, "Schéma implicite"; Baraff & Witkin 1998).
-// The forces are linearised (ex 7.1), each step assembles A Δv = b (ex 7.2) and solves it by
-// filtered conjugate gradients (ex 7.3). What that buys and costs, against chapter 6's explicit
-// methods, Newton's exact backward Euler and Liu et al.'s local/global method.
+// Chapter 7: cloth, implicit (lecture, "Schéma implicite"; Baraff & Witkin 1998). Linearised forces
+// (ex 7.1), A Δv = b each step (ex 7.2) solved by filtered conjugate gradients (ex 7.3); what it buys
+// and costs against chapter 6's explicit methods, Newton's backward Euler and Liu et al. 2013.
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -59,6 +58,7 @@ void large_steps(ChapterApp& app, const ClothScene& scene, ClothKernels kernels,
   kit::print_stiffness_table(app.report(), rows, 1.0 / 30);
   app.figure(kit::cloth_stiffness_figure(rows, 1.0 / 30, scene.name));
   const kit::Linearisation l = kit::linearisation_error(scene, kernels, implicit, settings, 1.0 / 30);
+  if (!l.failure.empty()) return app.report().print("One step mid-swing failed: " + l.failure + ".\n\n");
   app.report().say("linearisation", "One step of h = {h:.4g} s mid-swing (K = 1e4 N/m): the linearised Δv "
                    "differs from backward Euler's exact one by {difference:.2e} (relative); Newton took "
                    "{iterations} solves to a residual of {residual:.1e}.\n\n",

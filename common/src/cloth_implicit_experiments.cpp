@@ -285,10 +285,15 @@ Linearisation linearisation_error(const ClothScene& scene, ClothKernels kernels,
   BackwardEulerStepper linearised(cloth, ImplicitMethod::linearised, exact, implicit);
   exact.iterations = 30;
   BackwardEulerStepper newton(cloth, ImplicitMethod::newton, exact, implicit);
-  const NodeArray dv_lin = linearised.velocity_change(cloth, h), dv_newton = newton.velocity_change(cloth, h);
   Linearisation l;
   l.h = h;
-  l.difference = (dv_lin - dv_newton).norm() / dv_newton.norm();
+  try {
+    const NodeArray dv_lin = linearised.velocity_change(cloth, h), dv_newton = newton.velocity_change(cloth, h);
+    l.difference = (dv_lin - dv_newton).norm() / dv_newton.norm();
+  } catch (const SolveFailed& e) {
+    l.failure = e.what();
+    l.difference = NAN;
+  }
   l.newton_iterations = newton.work.newton_iterations;
   l.newton_residual = newton.last_newton_residual;
   return l;

@@ -110,6 +110,7 @@ struct Linearisation {
   double difference = 0;     ///< ‖Δv_lin − Δv_Newton‖ / ‖Δv_Newton‖
   long newton_iterations = 0;
   double newton_residual = 0;  ///< ‖g‖ / ‖h f_n‖ at the end
+  std::string failure;         ///< why a solve failed (--no-clamp); empty when both steps were taken
 };
 Linearisation linearisation_error(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
                                   const ImplicitSettings& settings,
