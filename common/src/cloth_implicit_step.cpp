@@ -72,22 +72,44 @@ void BackwardEulerStepper::set_filters(const ClothSystem& cloth, const NodeArray
   // is free again. "Resting" allows 1% of a sphere's radius: a step along the surface ends a
   // little outside a sphere, (h v)²/2R.
   std::fill(filters_.begin(), filters_.end(), Matrix3::Identity());
-  const auto hold = [&](Eigen::Index i, const Vector3& n) {
-    filters_[std::size_t(i)] = filters_[std::size_t(i)] * (Matrix3::Identity() - n * n.transpose());
+  holds_.clear();
+  const auto hold = [&](Eigen::Index i, const Vector3& n, double friction) {
+    // S stays a projector when a node meets two colliders: only the part of n still free is
+    // removed (Gram–Schmidt on the normals).
+    Matrix3& filter = filters_[std::size_t(i)];
+    Vector3 u = filter * n;
+    if (u.norm() < 1e-9) return;
+    u.normalize();
+    filter -= u * u.transpose();
+    holds_.push_back({std::int32_t(i), u, friction, std::max(0.0, -f.row(i).dot(n))});
     ++work.filtered_nodes;
   };
   if (const auto& ground = cloth.scene().ground)
     for (Eigen::Index i = 0; i < cloth.x.rows(); ++i)
-      if (cloth.x(i, 1) <= ground->height && f(i, 1) <= 0) hold(i, Vector3::UnitY());
+      if (cloth.x(i, 1) <= ground->height && f(i, 1) <= 0) hold(i, Vector3::UnitY(), ground->friction);
   for (const SphereCollider& sphere : cloth.scene().spheres) {
     const double radius = contact_radius(cloth.scene().grid, sphere);
     for (Eigen::Index i = 0; i < cloth.x.rows(); ++i) {
       const Vector3 r = cloth.x.row(i).transpose() - sphere.center;
       const double d = r.norm();
-      if (d > 0 && d <= 1.01 * radius && f.row(i).dot(r) <= 0) hold(i, r / d);
+      if (d > 0 && d <= 1.01 * radius && f.row(i).dot(r) <= 0) hold(i, r / d, sphere.friction);
     }
   }
   for (const std::int32_t p : cloth.pins()) filters_[std::size_t(p)].setZero();
+}
+
+void BackwardEulerStepper::friction(ClothSystem& cloth, double h) const {
+  // Coulomb friction on the nodes held on a collider during the step: the normal force N that
+  // pressed them in, over h, takes up to μ h N / m off the tangential speed (never reversing it).
+  for (const Hold& held : holds_) {
+    if (held.friction == 0 || cloth.inverse_masses()[held.node] == 0) continue;
+    Vector3 v = cloth.v.row(held.node);
+    const Vector3 tangential = v - v.dot(held.normal) * held.normal;
+    const double speed = tangential.norm(), loss = held.friction * h * held.pressure * cloth.inverse_masses()[held.node];
+    if (speed == 0) continue;
+    v -= std::min(1.0, loss / speed) * tangential;
+    cloth.v.row(held.node) = v;
+  }
 }
 
 void BackwardEulerStepper::filter(Eigen::VectorXd& w) const {
@@ -133,20 +155,31 @@ NodeArray BackwardEulerStepper::velocity_change(ClothSystem& cloth, double h) {
   matrix_.assemble(springs, cloth.x, stiffness_, cloth.masses(), cloth.scene().drag, h);
   ++work.assemblies;
   // b = h (f_n + h ∂f/∂x v_n)   (ERRATA 14, the symmetric form)
+  const double f_norm = f_.norm();
   Eigen::VectorXd b;
   stiffness_times(springs, stiffness_, cloth.v, b);
   b = h * (flatten(f_) + h * b);
-  if (settings_.solver == ImplicitSolver::pcg) set_filters(cloth, f_);
-  Eigen::VectorXd dv = solve(b, settings_.cg_tolerance);
+  Eigen::VectorXd dv;
+  if (settings_.solver == ImplicitSolver::pcg) {
+    // Baraff & Witkin's z: a held node's velocity into or out of its collider is cancelled by
+    // the step (Δv = z there), the solve finding the rest: A (z + y) = b with y = S y.
+    set_filters(cloth, f_);
+    const Eigen::VectorXd v = flatten(cloth.v);
+    Eigen::VectorXd z = v;
+    filter(z);
+    z -= v;  // z = −(I − S) v
+    dv = z + solve(b - matrix_.matrix * z, settings_.cg_tolerance);
+  } else {
+    dv = solve(b, settings_.cg_tolerance);
+  }
   last_newton_residual = 0;
-  if (method_ == ImplicitMethod::newton) dv = newton(cloth, std::move(dv), b, h);
+  if (method_ == ImplicitMethod::newton) dv = newton(cloth, std::move(dv), f_norm, h);
   NodeArray out;
   unflatten(dv, out);
   return out;
 }
 
-Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd dv, const Eigen::VectorXd& b0,
-                                             double h) {
+Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd dv, double f_norm, double h) {
   const Springs& springs = cloth.springs();
   const Eigen::VectorXd& m = cloth.masses();
   const bool filtered = settings_.solver == ImplicitSolver::pcg;
@@ -166,9 +199,9 @@ Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd
       for (const std::int32_t p : cloth.pins()) g.segment<3>(3 * p).setZero();
     return g.norm();
   };
-  Eigen::VectorXd scale_vector = b0;
-  if (filtered) filter(scale_vector);
-  const double scale = std::max(scale_vector.norm(), 1e-300);
+  // ‖h f_n‖, unfiltered: it does not vanish when every node is held (a sheet at rest on the
+  // ground is still pressed into it), unlike the filtered residual it is compared with.
+  const double scale = std::max(h * f_norm, 1e-300);
   last_newton_residual = residual() / scale;
   for (int k = 1; k < settings_.iterations && last_newton_residual > settings_.newton_tolerance; ++k) {
     jacobian(cloth, x1_);
@@ -187,6 +220,7 @@ Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd
 void BackwardEulerStepper::step(ClothSystem& cloth, double h) {
   const NodeArray dv = velocity_change(cloth, h);
   cloth.v += dv;
+  friction(cloth, h);
   cloth.x += h * cloth.v;
   ++work.steps;
   cloth.finish_step(h);

@@ -14,12 +14,13 @@ LiuStepper::LiuStepper(const ClothSystem& cloth, int iterations)
 }
 
 void LiuStepper::factorise(const ClothSystem& cloth, double h) {
-  // M + h² L over the free nodes: L gains K_s at (a, a), (b, b) and −K_s at (a, b), (b, a).
+  // M (1 + h c) + h² L over the free nodes: L gains K_s at (a, a), (b, b) and −K_s at (a, b), (b, a).
+  const double drag = 1 + h * cloth.scene().drag.value_or(0.0);
   const Springs& springs = cloth.springs();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(std::size_t(free_count_) + 4 * springs.size());
   for (std::size_t i = 0; i < free_.size(); ++i)
-    if (free_[i] >= 0) entries.emplace_back(free_[i], free_[i], cloth.masses()[Eigen::Index(i)]);
+    if (free_[i] >= 0) entries.emplace_back(free_[i], free_[i], cloth.masses()[Eigen::Index(i)] * drag);
   for (std::size_t s = 0; s < springs.size(); ++s) {
     const double w = h * h * springs.stiffness[s];
     const auto fa = free_[std::size_t(springs.a[s])], fb = free_[std::size_t(springs.b[s])];
@@ -37,6 +38,9 @@ void LiuStepper::factorise(const ClothSystem& cloth, double h) {
 
 void LiuStepper::step(ClothSystem& cloth, double h) {
   if (h != factorised_h_) factorise(cloth, h);
+  // Drag c in backward Euler, M (1 + h c)(x − x_n) = h M v_n + h² (M g + f_springs): the same
+  // minimisation with masses M (1 + h c) and y = x_n + (h v_n + h² g)/(1 + h c).
+  const double drag = 1 + h * cloth.scene().drag.value_or(0.0);
   const Springs& springs = cloth.springs();
   const Eigen::VectorXd& m = cloth.masses();
   const Vector3 g = cloth.scene().gravity.value_or(Vector3::Zero());
@@ -46,13 +50,13 @@ void LiuStepper::step(ClothSystem& cloth, double h) {
   for (std::size_t i = 0; i < free_.size(); ++i)
     if (const auto row = free_[i]; row >= 0) {
       const auto n = Eigen::Index(i);
-      y_.row(row) = cloth.x.row(n) + h * cloth.v.row(n) + h * h * g.transpose();
+      y_.row(row) = cloth.x.row(n) + (h * cloth.v.row(n) + h * h * g.transpose()) / drag;
       x.row(n) = y_.row(row);
     }
   for (int k = 0; k < iterations_; ++k) {
     rhs_ = y_;
     for (std::size_t i = 0; i < free_.size(); ++i)
-      if (free_[i] >= 0) rhs_.row(free_[i]) *= m[Eigen::Index(i)];
+      if (free_[i] >= 0) rhs_.row(free_[i]) *= m[Eigen::Index(i)] * drag;
     for (std::size_t s = 0; s < springs.size(); ++s) {
       const auto a = springs.a[s], b = springs.b[s];
       const Vector3 p = x.row(a) - x.row(b);
@@ -70,8 +74,7 @@ void LiuStepper::step(ClothSystem& cloth, double h) {
       if (free_[i] >= 0) x.row(Eigen::Index(i)) = solution_.row(free_[i]);
     ++work.local_global;
   }
-  const double drag = 1 + h * cloth.scene().drag.value_or(0.0);
-  cloth.v = (x - cloth.x) / (h * drag);
+  cloth.v = (x - cloth.x) / h;
   cloth.x = x;
   ++work.steps;
   cloth.finish_step(h);

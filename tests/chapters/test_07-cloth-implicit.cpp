@@ -84,6 +84,49 @@ TEST_CASE("implicit cloth: (M − A)/h² is ∂f/∂x, matching central differen
   }
 }
 
+TEST_CASE("implicit cloth: (M(1 + hc) − A − h²∂f/∂x)/h is ∂f/∂v, matching central differences in v", "[implicit]") {
+  kit::ClothScene scene = sheet(1e3);
+  scene.drag = 3;
+  for (auto* family : {&scene.springs.structural, &scene.springs.shear, &scene.springs.bend})
+    if (*family) (*family)->damping = 0.5;
+  kit::ClothSystem cloth = swinging(scene);
+  const kit::Springs& springs = cloth.springs();
+  std::vector<kit::Matrix3> blocks(springs.size());
+  for (std::size_t s = 0; s < springs.size(); ++s)
+    blocks[s] = kit::spring_stiffness_block(cloth.x.row(springs.a[s]), cloth.x.row(springs.b[s]), springs.rest[s],
+                                            springs.stiffness[s], false);
+  const double h = 0.01;
+  kit::ImplicitMatrix matrix(springs, cloth.x.rows(), {});
+  matrix.assemble(springs, cloth.x, blocks, cloth.masses(), scene.drag, h);
+  std::mt19937_64 random(9);
+  std::uniform_real_distribution<double> any(-1, 1);
+  kit::NodeArray w(cloth.x.rows(), 3), f_plus, f_minus;
+  for (Eigen::Index i = 0; i < w.size(); ++i) w.data()[i] = any(random);
+  const double eps = 1e-6;
+  cloth.forces()(cloth.x, cloth.v + eps * w, f_plus);
+  cloth.forces()(cloth.x, cloth.v - eps * w, f_minus);
+  const Eigen::VectorXd numeric = kit::flatten(f_plus - f_minus) / (2 * eps);
+  Eigen::VectorXd mass_w = kit::flatten(w), stiffness_w;
+  for (Eigen::Index i = 0; i < cloth.masses().size(); ++i) mass_w.segment<3>(3 * i) *= cloth.masses()[i];
+  kit::stiffness_times(springs, blocks, w, stiffness_w);
+  // A w = M w − h (∂f/∂v) w − h² (∂f/∂x) w, drag included in ∂f/∂v.
+  const Eigen::VectorXd assembled = (mass_w - h * h * stiffness_w - matrix.matrix * kit::flatten(w)) / h;
+  CHECK((assembled - numeric).norm() <= 1e-6 * numeric.norm());
+}
+
+TEST_CASE("implicit cloth: on the ground, friction inside the filtered step brings the fallen sheet to rest",
+          "[implicit]") {
+  const kit::ClothScene scene = kit::load_cloth_scene(scenes / "fall.toml");
+  const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
+  kit::ClothRunOptions run = implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, scene.t_end);
+  run.samples = 10;
+  const kit::ClothRecording rec = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run);
+  REQUIRE(rec.exploded_at < 0);
+  CHECK(rec.implicit.filtered_nodes > 0);
+  CHECK(rec.deepest < 1e-9);
+  CHECK(rec.samples.back().kinetic < 1e-6);
+}
+
 TEST_CASE("implicit cloth: A is symmetric and definite with the clamp; without it CG reports negative curvature",
           "[implicit]") {
   const kit::ClothScene scene = kit::load_cloth_scene(scenes / "flag.toml");
@@ -177,7 +220,8 @@ TEST_CASE("implicit cloth: the filtered PCG holds pins exactly; Eigen's CG holds
 }
 
 TEST_CASE("implicit cloth: Liu's local/global iterations converge to Newton's backward-Euler step", "[implicit]") {
-  const kit::ClothScene scene = sheet(1e3);
+  kit::ClothScene scene = sheet(1e3);
+  scene.drag = 5;  // [1/s]: both treat it by backward Euler
   for (const double h : {1.0 / 30, 1.0 / 120}) {
     kit::ClothSystem newton_cloth = swinging(scene), liu_cloth = swinging(scene);
     kit::ImplicitSettings exact;
@@ -216,7 +260,7 @@ TEST_CASE("implicit cloth: CG iterations are counted, reported and bounded by th
     CHECK(w.unconverged_solves == 0);
     CHECK(w.max_cg_iterations > 0);
     CHECK(w.max_cg_iterations <= unknowns);
-    CHECK(w.cg_iterations <= 30 * w.max_cg_iterations);
+    CHECK(w.cg_iterations >= 30 * 1);  // every solve took at least one product with A
     CHECK(w.worst_residual <= 1e-3);
   }
 }
@@ -235,7 +279,7 @@ TEST_CASE("implicit cloth: on the drape at h = 1/30 s, filters hold the sheet on
     highest[int(solver)] = rec.frames.back().col(1).maxCoeff();
     if (solver == kit::ImplicitSolver::pcg) CHECK(rec.implicit.filtered_nodes > 0);
   }
-  CHECK(highest[int(kit::ImplicitSolver::pcg)] > top);        // draped over the sphere
+  CHECK(highest[int(kit::ImplicitSolver::pcg)] > 0.95 * top);  // draped over the sphere
   CHECK(highest[int(kit::ImplicitSolver::cg)] < 0.1 * top);   // fallen through it to the ground
 }
 

@@ -50,7 +50,7 @@ struct ImplicitWork {
   long factorizations = 0;       ///< Liu's sparse Cholesky factorisations
   long blocks = 0;               ///< spring stiffness blocks evaluated (ex 7.1)
   long assemblies = 0;           ///< matrices scattered
-  long filtered_nodes = 0;       ///< node-steps held on the ground inside the solve
+  long filtered_nodes = 0;       ///< node-steps held on a collider inside the solve
   double worst_residual = 0;     ///< the largest final relative residual of a solve
   ImplicitWork& operator+=(const ImplicitWork& other);
 };
@@ -89,8 +89,9 @@ class BackwardEulerStepper : public ImplicitStepper {
  private:
   void jacobian(const ClothSystem& cloth, const NodeArray& x);
   void set_filters(const ClothSystem& cloth, const NodeArray& f);
+  void friction(ClothSystem& cloth, double h) const;
   Eigen::VectorXd solve(Eigen::VectorXd b, double tolerance);
-  Eigen::VectorXd newton(ClothSystem& cloth, Eigen::VectorXd dv, const Eigen::VectorXd& b0, double h);
+  Eigen::VectorXd newton(ClothSystem& cloth, Eigen::VectorXd dv, double f_norm, double h);
   void filter(Eigen::VectorXd& w) const;
 
   ImplicitMethod method_;
@@ -99,6 +100,14 @@ class BackwardEulerStepper : public ImplicitStepper {
   ImplicitMatrix matrix_;
   std::vector<Matrix3> stiffness_;  ///< per spring, ∂f_a/∂x_a
   std::vector<Matrix3> filters_;    ///< per node, S
+  /// A node held on a collider in this step: its normal, the collider's friction, and the
+  /// normal force [N] that pressed it in at the start of the step.
+  struct Hold {
+    std::int32_t node;
+    Vector3 normal;
+    double friction, pressure;
+  };
+  std::vector<Hold> holds_;
   NodeArray f_, x1_, v1_;
 };
 

@@ -7,8 +7,8 @@
 // The global matrix does not change while h does not, so it is factorised once (sparse
 // Cholesky, Eigen's SimplicialLDLT) and each iteration costs three triangular solve pairs, one
 // per axis. Pins are eliminated (their positions move to the right side); springs model no
-// damping (the method has none); drag divides the new velocity by 1 + c h, its own backward
-// Euler; contacts and the strain limit follow the step as in every other method.
+// damping (the method has none); drag c is backward Euler's too (the masses become M (1 + h c));
+// contacts and the strain limit follow the step as in every other method.
 #include <Eigen/SparseCholesky>
 
 #include <kit/cloth_implicit_step.hpp>
