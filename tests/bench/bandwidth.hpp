@@ -29,12 +29,10 @@ inline double last_level_cache() {
   return double(std::max({sysconf(_SC_LEVEL3_CACHE_SIZE), sysconf(_SC_LEVEL2_CACHE_SIZE), 0L}));
 }
 
-// STREAM's triad, a[i] = b[i] + s·c[i], each array at least four times the last-level cache (the
-// STREAM rule), so that the arrays come from memory. Returns the bytes the memory moves per
-// second: 32 per element, two reads, one write and the read that brings the written line into
-// the cache first (STREAM's own count, 24, leaves that last one out).
-inline double triad_bandwidth(double& stream_convention) {
-  const std::size_t n = std::max<std::size_t>(std::size_t(1) << 25, std::size_t(4 * last_level_cache() / 8));
+// STREAM's triad, a[i] = b[i] + s·c[i], over arrays of n doubles. Returns the bytes the memory
+// moves per second: 32 per element, two reads, one write and the read that brings the written
+// line into the cache first (STREAM's own count, 24, leaves that last one out).
+inline double triad_bandwidth(std::size_t n, double& stream_convention) {
   std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
   const double s = 3.0;
   const double seconds = fastest([&] {
@@ -46,6 +44,24 @@ inline double triad_bandwidth(double& stream_convention) {
   if (a[n / 2] != 7.0) std::abort();  // the loop ran, and was not optimised away
   stream_convention = 24.0 * double(n) / seconds;
   return 32.0 * double(n) / seconds;
+}
+
+// The triad with each array at least four times the last-level cache (the STREAM rule), so that
+// the arrays come from memory.
+inline double triad_bandwidth(double& stream_convention) {
+  const std::size_t n = std::max<std::size_t>(std::size_t(1) << 25, std::size_t(4 * last_level_cache() / 8));
+  return triad_bandwidth(n, stream_convention);
+}
+
+// The same rule with each array at most 2^25 doubles (256 MiB, 768 MiB in all): a virtual
+// machine may report its whole socket's L3 (hundreds of MB, of which one core reaches only its
+// own slice), and four times that would allocate gigabytes. Arrays of that size still stream
+// from memory: together they exceed the whole of such a cache. `array_bytes`: each array's size.
+inline double capped_triad_bandwidth(double& stream_convention, double& array_bytes) {
+  const std::size_t n = std::clamp<std::size_t>(std::size_t(4 * last_level_cache() / 8), std::size_t(1) << 22,
+                                                std::size_t(1) << 25);
+  array_bytes = 8.0 * double(n);
+  return triad_bandwidth(n, stream_convention);
 }
 
 }  // namespace kit_bench

@@ -8,11 +8,6 @@
 //   3. Bullet's soft-body cloth, the peer a game programmer would use: cost per simulated second
 //      and how far its links stretch, against the kit at its own stable step.
 // Timings live here, never in the tests.
-#include <BulletSoftBody/btSoftBodyHelpers.h>
-#include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
-#include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
-#include <btBulletDynamicsCommon.h>
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -33,6 +28,7 @@
 #include <kit/table.hpp>
 
 #include "bandwidth.hpp"
+#include "bullet_cloth.hpp"
 #include "cloth_springs.hpp"
 #include "cloth_step.hpp"
 
@@ -191,56 +187,16 @@ Run kit_run(const Sheet& sheet) {
   return run;
 }
 
-// --- Bullet's soft-body cloth ------------------------------------------------------------------
-// The same sheet built the way Bullet's demos build cloth: CreatePatch with both diagonals (its
-// links are our structural and shear springs; it has no bend links), the total mass spread
-// evenly over the nodes, the two corners pinned by a zero mass, one stepSimulation of h per step.
-// Bullet is position-based: each link is pulled back towards its rest length `piterations` times
-// a step (Bullet's default: once), so there is no stiffness K and no stability limit on h.
+// --- Bullet's soft-body cloth (bullet_cloth.hpp) ---------------------------------------------
 Run bullet_run(int n, int iterations) {
-  btSoftBodyRigidBodyCollisionConfiguration configuration;
-  btCollisionDispatcher dispatcher(&configuration);
-  btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btSoftRigidDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
-  const btVector3 g(btScalar(gravity.x()), btScalar(gravity.y()), btScalar(gravity.z()));
-  world.setGravity(g);
-  btSoftBodyWorldInfo& info = world.getWorldInfo();
-  info.m_gravity = g;
-  info.m_sparsesdf.Initialize();
-  // Node (i, j) = j·n + i at (−0.5 + i/(n−1), 1, −0.5 + j/(n−1)), as on the kit's grid.
-  btSoftBody* cloth =
-      btSoftBodyHelpers::CreatePatch(info, btVector3(-0.5, 1, -0.5), btVector3(0.5, 1, -0.5),
-                                     btVector3(-0.5, 1, 0.5), btVector3(0.5, 1, 0.5), n, n, 0, true);
-  cloth->setTotalMass(btScalar(density * 1.0));  // 1 m²
-  cloth->setMass(0, 0);
-  cloth->setMass(n - 1, 0);
-  if (iterations > 0) cloth->m_cfg.piterations = iterations;
-  world.addSoftBody(cloth);
-
+  kit_bench::BulletCloth cloth(n, density * 1.0, gravity, iterations);  // 1 m²
   Run run;
   run.h = bullet_h;
   run.steps = long(std::lround(t_end / bullet_h));
   const kit::Stopwatch clock;
-  for (long k = 0; k < run.steps; ++k) world.stepSimulation(btScalar(bullet_h), 0);
+  for (long k = 0; k < run.steps; ++k) cloth.step(bullet_h);
   run.seconds = clock.seconds();
-
-  for (int l = 0; l < cloth->m_links.size(); ++l) {
-    const btSoftBody::Link& link = cloth->m_links[l];
-    const double length = double((link.m_n[0]->m_x - link.m_n[1]->m_x).length());
-    const double strain = length / double(link.m_rl) - 1;
-    // Nodes sit in one array, node (i, j) at j·n + i: structural links join nodes 1 or n apart.
-    const long jump = std::abs(link.m_n[0] - link.m_n[1]);
-    const bool structural = jump == 1 || jump == n;
-    if (!std::isfinite(strain)) {
-      run.links = run.structural = NAN;
-      break;
-    }
-    run.links = std::max(run.links, strain);
-    if (structural) run.structural = std::max(run.structural, strain);
-  }
-  world.removeSoftBody(cloth);
-  delete cloth;
+  cloth.max_strain(run.structural, run.links);
   return run;
 }
 }  // namespace
