@@ -23,9 +23,9 @@ Vector3 random_direction(SpriteRandom& random) {
 
 /// The force on a of an undamped spring, f_a = −K (l − L0) x̂ [N]: what the block derives from.
 Vector3 hooke(const Vector3& xa, const Vector3& xb, double rest, double stiffness) {
-  const Vector3 d = xa - xb;
-  const double l = d.norm();
-  return -stiffness * (l - rest) / l * d;
+  const Vector3 gap = xa - xb;
+  const double l = gap.norm();
+  return -stiffness * (l - rest) / l * gap;
 }
 
 double lowest_eigenvalue(const Matrix3& m) {

@@ -17,10 +17,10 @@ void unflatten(const Eigen::VectorXd& flat, NodeArray& a) {
 }
 
 Matrix3 spring_damping_block(const Vector3& xa, const Vector3& xb, double damping) {
-  const Vector3 d = xa - xb;
-  const double l = d.norm();
+  const Vector3 gap = xa - xb;
+  const double l = gap.norm();
   if (l == 0 || damping == 0) return Matrix3::Zero();
-  const Vector3 along = d / l;
+  const Vector3 along = gap / l;
   return -damping * along * along.transpose();
 }
 

@@ -114,8 +114,8 @@ void BackwardEulerStepper::friction(ClothSystem& cloth, double h) const {
 
 void BackwardEulerStepper::filter(Eigen::VectorXd& w) const {
   for (std::size_t i = 0; i < filters_.size(); ++i) {
-    const Eigen::Index k = 3 * Eigen::Index(i);
-    w.segment<3>(k) = filters_[i] * w.segment<3>(k);
+    const auto first = 3 * Eigen::Index(i);
+    w.segment<3>(first) = filters_[i] * w.segment<3>(first);
   }
 }
 
