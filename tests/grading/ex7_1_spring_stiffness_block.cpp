@@ -138,7 +138,8 @@ TEST_CASE("ex 7.1: the block is symmetric, the same seen from b, unchanged by a 
       CHECK(largest_entry(j - j.transpose()) <= tol);
       // ∂f_b/∂x_b = ∂f_a/∂x_a: swapping the ends gives the same block.
       CHECK(largest_entry(kit::spring_stiffness_block(s.xb, s.xa, rest, s.k, clamp) - j) <= tol);
-      CHECK(largest_entry(kit::spring_stiffness_block(s.xa + shift, s.xb + shift, rest, s.k, clamp) - j) <= 1e-9 * s.k * (1 + rest / s.length));
+      const Matrix3 moved = kit::spring_stiffness_block(s.xa + shift, s.xb + shift, rest, s.k, clamp);
+      CHECK(largest_entry(moved - j) <= 1e-9 * s.k * (1 + rest / s.length));
       CHECK(largest_entry(kit::spring_stiffness_block(s.xa, s.xb, rest, 3 * s.k, clamp) - 3 * j) <= 3 * tol);
     }
   }
@@ -150,12 +151,15 @@ TEST_CASE("ex 7.1: closed forms: L0 = 0 gives −K I; l = L0 gives −K x̂x̂�
   // A zero-rest-length spring is linear, f_a = −K (x_a − x_b): its block is −K I in every direction.
   const Vector3 b(0.25, -1, 0.5);
   for (const Vector3& a : {Vector3(1, 2, 3), Vector3(-0.5, 0, 0), Vector3(0.25, -1, 4)}) {
-    for (bool clamp : {false, true}) CHECK(largest_entry(kit::spring_stiffness_block(a, b, 0.0, k, clamp) + k * Matrix3::Identity()) <= 1e-12 * k);
+    for (bool clamp : {false, true})
+      CHECK(largest_entry(kit::spring_stiffness_block(a, b, 0.0, k, clamp) + k * Matrix3::Identity()) <= 1e-12 * k);
   }
   // At its rest length along y: only the yy entry, −K, with or without the clamp.
   Matrix3 along_y = Matrix3::Zero();
   along_y(1, 1) = -k;
-  for (bool clamp : {false, true}) CHECK(largest_entry(kit::spring_stiffness_block(b + Vector3(0, 0.75, 0), b, 0.75, k, clamp) - along_y) <= 1e-12 * k);
+  const Vector3 above = b + Vector3(0, 0.75, 0);
+  for (bool clamp : {false, true})
+    CHECK(largest_entry(kit::spring_stiffness_block(above, b, 0.75, k, clamp) - along_y) <= 1e-12 * k);
   // Half compressed along x (l = 1, L0 = 2), unclamped: −K on xx, +K across (K (L0/l − 1) = K).
   const Matrix3 compressed = kit::spring_stiffness_block(Vector3(1, 0, 0), Vector3::Zero(), 2.0, k, false);
   CHECK(largest_entry(compressed - Vector3(-k, k, k).asDiagonal().toDenseMatrix()) <= 1e-12 * k);

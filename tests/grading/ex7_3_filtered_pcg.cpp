@@ -145,7 +145,7 @@ Eigen::MatrixXd cloth_matrix(std::mt19937_64& rng, int nx, int ny) {
   return a;
 }
 
-/// What a constrained solve must satisfy, checked in one place (8 assertions).
+/// What a constrained solve must satisfy, checked in one place (a fixed number of assertions).
 void check_constrained_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, const Constraints& c, double tol,
                              const kit::PcgResult& got) {
   const Eigen::MatrixXd z = allowed_basis(c);
@@ -197,7 +197,8 @@ TEST_CASE("ex 7.3: random SPD systems with free, pinned and plane nodes: solved 
   }
 }
 
-TEST_CASE("ex 7.3: a small cloth: two loaded corners pinned, an edge held on a plane", "[grade][07-cloth-implicit][ex7.3]") {
+TEST_CASE("ex 7.3: a small cloth: two loaded corners pinned, an edge held on a plane",
+          "[grade][07-cloth-implicit][ex7.3]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 10; ++trial) {
     const int nx = 6 + int(random_index(rng, 5)), ny = 4 + int(random_index(rng, 4));
