@@ -164,8 +164,9 @@ long iterations_of(const ClothRecording& rec) {
 }  // namespace
 
 std::vector<StiffnessRow> stiffness_sweep(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                                          const ImplicitSettings& settings, const std::vector<double>& stiffnesses,
+                                          ImplicitSettings settings, const std::vector<double>& stiffnesses,
                                           double h, double t_end) {
+  settings.iterations = experiment_iterations;
   std::vector<StiffnessRow> rows;
   for (const double k : stiffnesses) {
     const ClothScene sheet = test_sheet(scene, 8, k);
@@ -194,7 +195,8 @@ std::vector<StiffnessRow> stiffness_sweep(const ClothScene& scene, ClothKernels 
 }
 
 Trade speed_accuracy_trade(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                           const ImplicitSettings& settings, int n, double stiffness, double t_end) {
+                           ImplicitSettings settings, int n, double stiffness, double t_end) {
+  settings.iterations = experiment_iterations;
   Trade trade;
   trade.stiffness = stiffness, trade.n = n, trade.t_end = t_end;
   const ClothScene sheet = test_sheet(scene, n, stiffness);

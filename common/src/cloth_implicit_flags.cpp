@@ -26,7 +26,8 @@ void add_implicit_cloth_flags(ChapterApp& app, ClothFlags& cloth, ImplicitFlags&
       ->type_name("NAME")
       ->capture_default_str();
   app.add_real("--cg-tol", f.cg_tol, "relative residual of each linear solve", between(1e-14, 0.5));
-  app.add_count("--iterations", f.iterations, "Liu's local/global iterations; Newton's most iterations", 1, 10'000);
+  app.add_count("--iterations", f.iterations,
+                "the scene run's Liu local/global iterations, or Newton's most (the fixed experiments use 10)", 1, 1000);
   app.cli().add_flag("--no-clamp", f.no_clamp,
                      "keep the compressed springs' negative term: A may be indefinite and CG may fail");
 }
