@@ -54,16 +54,22 @@ kit::ClothSystem swinging(const kit::ClothScene& scene, double t = 0.05) {
   for (int k = 0; k < 500; ++k) cloth.step(kit::ClothIntegrator::rk4, t / 500);
   return cloth;
 }
+/// ∂f_a/∂x_a of every spring of the cloth as it is (ex 7.1, unclamped).
+std::vector<kit::Matrix3> unclamped_blocks(const kit::ClothSystem& cloth) {
+  const kit::Springs& springs = cloth.springs();
+  std::vector<kit::Matrix3> blocks(springs.size());
+  for (std::size_t s = 0; s < springs.size(); ++s)
+    blocks[s] = kit::spring_stiffness_block(cloth.x.row(springs.a[s]), cloth.x.row(springs.b[s]), springs.rest[s],
+                                            springs.stiffness[s], false);
+  return blocks;
+}
 }  // namespace
 
 TEST_CASE("implicit cloth: (M − A)/h² is ∂f/∂x, matching central differences of the forces to 1e-6", "[implicit]") {
   const kit::ClothScene scene = sheet(1e3);
   kit::ClothSystem cloth = swinging(scene);
   const kit::Springs& springs = cloth.springs();
-  std::vector<kit::Matrix3> blocks(springs.size());
-  for (std::size_t s = 0; s < springs.size(); ++s)
-    blocks[s] = kit::spring_stiffness_block(cloth.x.row(springs.a[s]), cloth.x.row(springs.b[s]), springs.rest[s],
-                                            springs.stiffness[s], false);
+  const std::vector<kit::Matrix3> blocks = unclamped_blocks(cloth);
   const double h = 0.01;
   kit::ImplicitMatrix matrix(springs, cloth.x.rows(), {});
   matrix.assemble(springs, cloth.x, blocks, cloth.masses(), std::nullopt, h);  // undamped: no ∂f/∂v
@@ -91,10 +97,7 @@ TEST_CASE("implicit cloth: (M(1 + hc) − A − h²∂f/∂x)/h is ∂f/∂v, ma
     if (*family) (*family)->damping = 0.5;
   kit::ClothSystem cloth = swinging(scene);
   const kit::Springs& springs = cloth.springs();
-  std::vector<kit::Matrix3> blocks(springs.size());
-  for (std::size_t s = 0; s < springs.size(); ++s)
-    blocks[s] = kit::spring_stiffness_block(cloth.x.row(springs.a[s]), cloth.x.row(springs.b[s]), springs.rest[s],
-                                            springs.stiffness[s], false);
+  const std::vector<kit::Matrix3> blocks = unclamped_blocks(cloth);
   const double h = 0.01;
   kit::ImplicitMatrix matrix(springs, cloth.x.rows(), {});
   matrix.assemble(springs, cloth.x, blocks, cloth.masses(), scene.drag, h);
