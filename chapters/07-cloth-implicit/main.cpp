@@ -81,7 +81,7 @@ void cost_of_accuracy(ChapterApp& app, const ClothScene& scene, ClothKernels ker
   app.figure(kit::cloth_trade_figure(trade, scene.name));
 }
 
-// 5. The linear solver: CG iterations per solve against h and K, Eigen's CG and the filtered PCG.
+// 5. The linear solver: CG iterations per solve against h and K: Eigen CG, filtered PCG, multigrid PCG.
 void solver_cost(ChapterApp& app, const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
                  const ImplicitSettings& settings) {
   const auto points = kit::solver_behaviour(scene, kernels, implicit, settings, {1e2, 1e4, 1e6},

@@ -261,7 +261,7 @@ std::vector<SolverPoint> solver_behaviour(const ClothScene& scene, ClothKernels 
   for (const double k : stiffnesses) {
     const ClothScene sheet = test_sheet(scene, 12, k);
     const Springs springs = kernels.build_springs(sheet.grid, sheet.springs);
-    for (const ImplicitSolver solver : {ImplicitSolver::cg, ImplicitSolver::pcg})
+    for (const ImplicitSolver solver : all_implicit_solvers)
       for (const double h : steps) {
         ImplicitSettings s = settings;
         s.solver = solver;

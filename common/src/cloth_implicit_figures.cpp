@@ -107,11 +107,12 @@ Figure cloth_solver_figure(const std::vector<SolverPoint>& points, const std::st
     if (std::find(stiffnesses.begin(), stiffnesses.end(), q.stiffness) == stiffnesses.end())
       stiffnesses.push_back(q.stiffness);
   for (std::size_t c = 0; c < stiffnesses.size(); ++c)
-    for (const ImplicitSolver solver : {ImplicitSolver::cg, ImplicitSolver::pcg}) {
+    for (const ImplicitSolver solver : all_implicit_solvers) {
       std::vector<double> h, mean;
       for (const auto& q : points)
         if (q.solver == solver && q.stiffness == stiffnesses[c]) h.push_back(q.h), mean.push_back(std::max(q.mean_iterations, 0.5));
-      const std::string style = colours[c % 4] + (solver == ImplicitSolver::cg ? " lw 2 pt 6 dt 2" : " lw 2 pt 7");
+      const char* line = solver == ImplicitSolver::cg ? " lw 2 pt 6 dt 2" : solver == ImplicitSolver::pcg ? " lw 2 pt 7" : " lw 2 pt 5 dt 3";
+      const std::string style = colours[c % 4] + line;
       p.add({fmt::format("{}, K = {:.0e} N/m", display_name(solver), stiffnesses[c]), h, mean, "linespoints", style});
     }
   return fig;

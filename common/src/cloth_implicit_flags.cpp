@@ -21,8 +21,10 @@ void add_implicit_cloth_flags(ChapterApp& app, ClothFlags& cloth, ImplicitFlags&
   for (const ImplicitMethod m : all_implicit_methods) implicit.emplace_back(flag_name(m));
   add_cloth_flags(app, cloth, implicit);
   app.cli()
-      .add_option("--solver", f.solver, "linear solver: cg (Eigen, diagonal preconditioner) or pcg (ex 7.3, filtered)")
-      ->check(CLI::IsMember({"cg", "pcg"}))
+      .add_option("--solver", f.solver,
+                  "linear solver: cg (Eigen, diagonal preconditioner), pcg (ex 7.3, filtered) or mg (filtered, "
+                  "multigrid preconditioner: the fast one)")
+      ->check(CLI::IsMember({"cg", "pcg", "mg"}))
       ->type_name("NAME")
       ->capture_default_str();
   app.add_real("--cg-tol", f.cg_tol, "relative residual of each linear solve", between(1e-14, 0.5));
@@ -45,7 +47,8 @@ ClothRunOptions implicit_cloth_run(const ClothScene& scene, const ClothFlags& cl
     run.implicit = cloth.integrator.empty() ? ImplicitMethod::linearised : *implicit_named(cloth.integrator);
     if (!(cloth.dt > 0)) run.dt = implicit_default_dt;
   }
-  run.implicit_settings.solver = f.solver == "cg" ? ImplicitSolver::cg : ImplicitSolver::pcg;
+  for (const ImplicitSolver solver : all_implicit_solvers)
+    if (f.solver == flag_name(solver)) run.implicit_settings.solver = solver;
   run.implicit_settings.cg_tolerance = f.cg_tol;
   run.implicit_settings.iterations = int(f.iterations);
   run.implicit_settings.clamp = !f.no_clamp;

@@ -28,9 +28,22 @@ const char* display_name(ImplicitMethod method) {
   return "?";
 }
 
-const char* flag_name(ImplicitSolver solver) { return solver == ImplicitSolver::cg ? "cg" : "pcg"; }
+const char* flag_name(ImplicitSolver solver) {
+  switch (solver) {
+    case ImplicitSolver::cg: return "cg";
+    case ImplicitSolver::pcg: return "pcg";
+    case ImplicitSolver::mg: return "mg";
+  }
+  return "?";
+}
+
 const char* display_name(ImplicitSolver solver) {
-  return solver == ImplicitSolver::cg ? "Eigen CG" : "filtered PCG";
+  switch (solver) {
+    case ImplicitSolver::cg: return "Eigen CG";
+    case ImplicitSolver::pcg: return "filtered PCG";
+    case ImplicitSolver::mg: return "multigrid PCG";
+  }
+  return "?";
 }
 
 ImplicitWork& ImplicitWork::operator+=(const ImplicitWork& o) {
@@ -38,7 +51,7 @@ ImplicitWork& ImplicitWork::operator+=(const ImplicitWork& o) {
   max_cg_iterations = std::max(max_cg_iterations, o.max_cg_iterations);
   unconverged_solves += o.unconverged_solves, newton_iterations += o.newton_iterations;
   newton_unconverged += o.newton_unconverged, local_global += o.local_global;
-  factorizations += o.factorizations, blocks += o.blocks, assemblies += o.assemblies;
+  factorizations += o.factorizations, multigrid_setups += o.multigrid_setups, blocks += o.blocks, assemblies += o.assemblies;
   filtered_nodes += o.filtered_nodes, worst_residual = std::max(worst_residual, o.worst_residual);
   return *this;
 }
@@ -55,6 +68,8 @@ BackwardEulerStepper::BackwardEulerStepper(const ClothSystem& cloth, ImplicitMet
   if (!kernels.stiffness_block) throw std::invalid_argument("no spring stiffness block (ex 7.1) was given");
   if (settings.solver == ImplicitSolver::pcg && !kernels.pcg)
     throw std::invalid_argument("no filtered PCG (ex 7.3) was given");
+  if (settings.solver == ImplicitSolver::mg)
+    multigrid_.emplace(cloth.scene().grid.nx, cloth.scene().grid.ny, matrix_.matrix);
 }
 
 void BackwardEulerStepper::jacobian(const ClothSystem& cloth, const NodeArray& x) {
@@ -124,6 +139,12 @@ Eigen::VectorXd BackwardEulerStepper::solve(Eigen::VectorXd b, double tolerance)
   PcgResult r;
   if (settings_.solver == ImplicitSolver::pcg) {
     r = kernels_.pcg(matrix_.matrix, b, filters_, tolerance, settings_.max_cg_iterations);
+  } else if (settings_.solver == ImplicitSolver::mg) {
+    // Pins eliminated as well as filtered: the multigrid's coarse grids then never move them.
+    matrix_.constrain(b);
+    multigrid_->setup(matrix_.matrix);
+    ++work.multigrid_setups;
+    r = multigrid_pcg(matrix_.matrix, b, filters_, *multigrid_, tolerance, settings_.max_cg_iterations);
   } else {
     matrix_.constrain(b);
     Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg;
@@ -160,7 +181,7 @@ NodeArray BackwardEulerStepper::velocity_change(ClothSystem& cloth, double h) {
   stiffness_times(springs, stiffness_, cloth.v, b);
   b = h * (flatten(f_) + h * b);
   Eigen::VectorXd dv;
-  if (settings_.solver == ImplicitSolver::pcg) {
+  if (filtered(settings_.solver)) {
     // Baraff & Witkin's z: a held node's velocity into or out of its collider is cancelled by
     // the step (Δv = z there), the solve finding the rest: A (z + y) = b with y = S y.
     set_filters(cloth, f_);
@@ -182,7 +203,7 @@ NodeArray BackwardEulerStepper::velocity_change(ClothSystem& cloth, double h) {
 Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd dv, double f_norm, double h) {
   const Springs& springs = cloth.springs();
   const Eigen::VectorXd& m = cloth.masses();
-  const bool filtered = settings_.solver == ImplicitSolver::pcg;
+  const bool filtered = kit::filtered(settings_.solver);
   ++work.newton_iterations;  // the linearised step was the first
   // g(Δv) = M Δv − h f(x_n + h (v_n + Δv), v_n + Δv), over the free directions only.
   Eigen::VectorXd g(dv.size());

@@ -41,11 +41,11 @@ void print_implicit_work(Report& report, const ClothRecording& rec) {
   if (w.steps == 0 && rec.failure.empty()) return;
   report.say("implicit_work", "Implicit steps: {steps}; linear solves {solves} ({cg} CG iterations, {mean:.1f} a solve, "
              "at most {most}; {unconverged} stopped at the cap); Newton solves {newton}; Liu iterations {liu}; "
-             "{filtered} node-steps held on a collider inside the solve.\n",
+             "{filtered} node-steps held on a collider inside the solve; {multigrid} multigrid set-ups.\n",
              {{"steps", w.steps}, {"solves", w.solves}, {"cg", w.cg_iterations},
               {"mean", w.solves ? double(w.cg_iterations) / double(w.solves) : 0.0}, {"most", w.max_cg_iterations},
               {"unconverged", w.unconverged_solves}, {"newton", w.newton_iterations}, {"liu", w.local_global},
-              {"filtered", w.filtered_nodes}});
+              {"filtered", w.filtered_nodes}, {"multigrid", w.multigrid_setups}});
 }
 
 }  // namespace kit

@@ -2,17 +2,22 @@
 // forces, A is symmetric and definite with the clamp and the no-clamp failure is caught, a stiff
 // sheet stays bounded and loses energy at h = 1/30 s, the step is first order and agrees with
 // the explicit methods as h → 0, filtered pins are exact, Liu's iterations converge to Newton's
-// backward Euler, CG counts are reported and bounded, the chapter prints what was measured, and
-// bad input exits 2.
+// backward Euler, CG counts are reported and bounded, the multigrid preconditioner is symmetric
+// positive definite and keeps CG's iterations flat as K and the resolution grow, the chapter
+// prints what was measured, and bad input exits 2.
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <kit/cloth_implicit_experiments.hpp>
 #include <kit/cloth_liu.hpp>
+#include <kit/cloth_multigrid.hpp>
 #include <kit/cloth_scene_file.hpp>
 
 #include "cloth_implicit_wiring.hpp"
@@ -206,11 +211,11 @@ TEST_CASE("implicit cloth: as h → 0 the implicit step agrees with RK4, its err
   CHECK(errors.back() < 1e-2 * (reference - scene.grid.rest_positions()).norm());
 }
 
-TEST_CASE("implicit cloth: the filtered PCG holds pins exactly; Eigen's CG holds them by elimination", "[implicit]") {
+TEST_CASE("implicit cloth: the filtered PCGs hold pins exactly; Eigen's CG holds them by elimination", "[implicit]") {
   kit::ClothScene scene = sheet(1e4);
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   const kit::NodeArray rest = scene.grid.rest_positions();
-  for (const auto solver : {kit::ImplicitSolver::pcg, kit::ImplicitSolver::cg}) {
+  for (const auto solver : kit::all_implicit_solvers) {
     const kit::ClothRecording rec =
         kit::run_cloth(scene, springs, kit::student_cloth_kernels(), implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 1, solver));
     REQUIRE(rec.exploded_at < 0);
@@ -252,7 +257,7 @@ TEST_CASE("implicit cloth: CG iterations are counted, reported and bounded by th
   const kit::ClothScene scene = sheet(1e4);
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   const long unknowns = 3 * scene.grid.nodes();
-  for (const auto solver : {kit::ImplicitSolver::pcg, kit::ImplicitSolver::cg}) {
+  for (const auto solver : kit::all_implicit_solvers) {
     const kit::ClothRecording rec =
         kit::run_cloth(scene, springs, kit::student_cloth_kernels(), implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 1, solver));
     const kit::ImplicitWork& w = rec.implicit;
@@ -265,6 +270,7 @@ TEST_CASE("implicit cloth: CG iterations are counted, reported and bounded by th
     CHECK(w.max_cg_iterations <= unknowns);
     CHECK(w.cg_iterations >= 30 * 1);  // every solve took at least one product with A
     CHECK(w.worst_residual <= 1e-3);
+    CHECK(w.multigrid_setups == (solver == kit::ImplicitSolver::mg ? 30 : 0));  // one per solve
   }
 }
 
@@ -273,17 +279,121 @@ TEST_CASE("implicit cloth: on the drape at h = 1/30 s, filters hold the sheet on
   const kit::ClothScene scene = kit::load_cloth_scene(scenes / "drape.toml");
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   const double top = scene.spheres.at(0).center.y() + scene.spheres.at(0).radius;
-  double highest[2];
-  for (const auto solver : {kit::ImplicitSolver::pcg, kit::ImplicitSolver::cg}) {
+  double highest[3];
+  for (const auto solver : kit::all_implicit_solvers) {
     const kit::ClothRecording rec = kit::run_cloth(scene, springs, kit::student_cloth_kernels(),
                                                    implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 3, solver));
     REQUIRE(rec.exploded_at < 0);
     CHECK(rec.deepest < 1e-9);  // after each step's contacts, whichever solver
     highest[int(solver)] = rec.frames.back().col(1).maxCoeff();
-    if (solver == kit::ImplicitSolver::pcg) CHECK(rec.implicit.filtered_nodes > 0);
+    if (kit::filtered(solver)) CHECK(rec.implicit.filtered_nodes > 0);
   }
   CHECK(highest[int(kit::ImplicitSolver::pcg)] > 0.95 * top);  // draped over the sphere
+  CHECK(highest[int(kit::ImplicitSolver::mg)] > 0.95 * top);
   CHECK(highest[int(kit::ImplicitSolver::cg)] < 0.1 * top);   // fallen through it to the ground
+}
+
+namespace {
+/// The implicit matrix of an n-node-wide sheet of stiffness K at h = 1/30 s, pins eliminated, as
+/// the multigrid solver sees it: in the shape a softer sheet (K = 1e3 N/m) swings into, whose
+/// stretched and compressed springs make the blocks anisotropic.
+kit::SparseMatrix swinging_matrix(int n, double stiffness) {
+  const kit::ClothSystem shape = swinging(sheet(1e3, n));
+  const kit::ClothScene scene = sheet(stiffness, n);
+  kit::ClothSystem cloth(scene, kit::build_springs(scene.grid, scene.springs), kit::student_cloth_kernels());
+  cloth.x = shape.x, cloth.v = shape.v;
+  kit::ImplicitSettings settings;
+  settings.solver = kit::ImplicitSolver::mg;
+  kit::BackwardEulerStepper stepper(cloth, kit::ImplicitMethod::linearised, settings, kit::student_implicit_kernels());
+  stepper.velocity_change(cloth, 1.0 / 30);
+  return stepper.matrix();
+}
+
+Eigen::VectorXd random_vector(Eigen::Index size, std::mt19937_64& random) {
+  std::uniform_real_distribution<double> any(-1, 1);
+  Eigen::VectorXd v(size);
+  for (Eigen::Index i = 0; i < size; ++i) v[i] = any(random);
+  return v;
+}
+}  // namespace
+
+TEST_CASE("multigrid: the V-cycle is symmetric positive definite and its PCG agrees with a direct solve, on grids "
+          "of any shape", "[implicit][multigrid]") {
+  std::mt19937_64 random(11);
+  // Odd and even sides, square and not, and one small enough to be its own coarsest grid.
+  for (const int n : {4, 9, 12, 30}) {
+    const kit::ClothScene scene = sheet(1e4, n);
+    const kit::SparseMatrix A = swinging_matrix(n, 1e4);
+    kit::GridMultigrid multigrid(scene.grid.nx, scene.grid.ny, A);
+    multigrid.setup(A);
+    INFO(scene.grid.nx << "x" << scene.grid.ny << " nodes, " << multigrid.levels() << " levels");
+    CHECK(multigrid.level_nodes(multigrid.levels() - 1) <= 36);  // the coarsest: at most 6×6
+    for (int l = 1; l < multigrid.levels(); ++l) CHECK(4 * multigrid.level_nodes(l) < 2 * multigrid.level_nodes(l - 1));
+    for (int trial = 0; trial < 5; ++trial) {
+      const Eigen::VectorXd r = random_vector(A.rows(), random), s = random_vector(A.rows(), random);
+      Eigen::VectorXd br, bs;
+      multigrid.apply(r, br), multigrid.apply(s, bs);
+      CHECK(std::abs(s.dot(br) - r.dot(bs)) <= 1e-5 * s.norm() * br.norm());  // single precision
+      CHECK(r.dot(br) > 0);
+    }
+    const Eigen::VectorXd b = random_vector(A.rows(), random);
+    const std::vector<kit::Matrix3> free(std::size_t(scene.grid.nodes()), kit::Matrix3::Identity());
+    const kit::PcgResult pcg = kit::multigrid_pcg(A, b, free, multigrid, 1e-10, 500);
+    CHECK(pcg.converged);
+    CHECK(pcg.residual <= 1e-10);
+    CHECK((A * pcg.x - b).norm() <= 1e-10 * b.norm());
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct{Eigen::SparseMatrix<double>(A)};
+    const Eigen::VectorXd x = direct.solve(b);
+    CHECK((pcg.x - x).norm() <= 1e-6 * x.norm());
+    // One level: the V-cycle is the inverse of A rounded to single precision.
+    if (multigrid.levels() == 1) CHECK(pcg.iterations <= 2);
+  }
+}
+
+TEST_CASE("multigrid: CG needs an order of magnitude fewer iterations than with diag(A), the more so as K and the "
+          "resolution grow", "[implicit][multigrid]") {
+  std::mt19937_64 random(12);
+  std::map<std::pair<int, double>, std::pair<int, int>> counts;  // (n, K) → (multigrid, diagonal)
+  for (const int n : {9, 17, 33})
+    for (const double stiffness : {1e2, 1e4, 1e6}) {
+      const kit::ClothScene scene = sheet(stiffness, n);
+      const kit::SparseMatrix A = swinging_matrix(n, stiffness);
+      const Eigen::VectorXd b = random_vector(A.rows(), random);
+      kit::GridMultigrid multigrid(scene.grid.nx, scene.grid.ny, A);
+      multigrid.setup(A);
+      const std::vector<kit::Matrix3> free(std::size_t(scene.grid.nodes()), kit::Matrix3::Identity());
+      const kit::PcgResult pcg = kit::multigrid_pcg(A, b, free, multigrid, 1e-6, 500);
+      Eigen::ConjugateGradient<kit::SparseMatrix, Eigen::Lower | Eigen::Upper> cg;
+      cg.setTolerance(1e-6);
+      cg.setMaxIterations(100000);
+      cg.compute(A);
+      const Eigen::VectorXd x = cg.solve(b);
+      INFO(n << " nodes across, K = " << stiffness << ": multigrid " << pcg.iterations << ", diagonal "
+             << cg.iterations());
+      REQUIRE(pcg.converged);
+      REQUIRE(cg.info() == Eigen::Success);
+      CHECK(pcg.iterations <= 60);
+      CHECK(cg.iterations() >= 8 * pcg.iterations);
+      counts[{n, stiffness}] = {pcg.iterations, int(cg.iterations())};
+    }
+  // Up to K = 1e4 N/m (the bench's sheet), the count barely moves with the resolution; at 1e6 it
+  // grows (bilinear interpolation misses the stiff sheet's soft bending shapes), diag(A)'s more.
+  for (const double stiffness : {1e2, 1e4}) CHECK(counts[{33, stiffness}].first <= 2 * counts[{9, stiffness}].first);
+  const auto gain = [&](int n, double k) { return double(counts[{n, k}].second) / counts[{n, k}].first; };
+  CHECK(gain(33, 1e4) > 5 * gain(9, 1e2));
+  CHECK(gain(33, 1e6) > 4 * gain(9, 1e2));
+}
+
+TEST_CASE("multigrid: a matrix without the cloth's block pattern is refused", "[implicit][multigrid]") {
+  CHECK_THROWS_AS(kit::GridMultigrid(3, 3, kit::SparseMatrix(9, 9)), std::invalid_argument);  // 27 rows needed
+  kit::SparseMatrix scalar(27, 27);  // 27 rows, but no 3×3 blocks: only a diagonal
+  for (int i = 0; i < 27; ++i) scalar.insert(i, i) = 1;
+  scalar.makeCompressed();
+  CHECK_THROWS_AS(kit::GridMultigrid(3, 3, scalar), std::invalid_argument);
+  const kit::ClothScene scene = sheet(1e4, 9);
+  const kit::SparseMatrix A = swinging_matrix(9, 1e4);
+  kit::GridMultigrid multigrid(scene.grid.nx, scene.grid.ny, A);
+  CHECK_THROWS_AS(multigrid.setup(scalar), std::invalid_argument);
 }
 
 TEST_CASE("chapter 7: the printed numbers are the ones measured") {
@@ -333,6 +443,7 @@ TEST_CASE("chapter 7: an explicit method at the implicit step is reported as div
 TEST_CASE("chapter 7: bad flags are usage errors that name the flag") {
   kit::test::expect_usage_errors(binary, {
       {{"--solver", "lu"}, "--solver"},
+      {{"--solver", "MG"}, "--solver"},
       {{"--cg-tol", "0"}, "--cg-tol"},
       {{"--cg-tol", "1"}, "--cg-tol"},
       {{"--iterations", "0"}, "--iterations"},

@@ -6,14 +6,17 @@
 //       g(Δv) = M Δv − h f(x_n + h (v_n + Δv), v_n + Δv) = 0
 //     until it holds, to measure what the linearisation costs in accuracy;
 //   - Liu et al. 2013 (cloth_liu.hpp), the third point on the speed/accuracy trade.
-// Either solver: Eigen's conjugate gradient with a diagonal preconditioner, pins eliminated and
-// contacts answered after the step; or the student's filtered PCG (ex 7.3), pins and ground
-// contacts held by per-node filters inside the solve.
+// Three solvers: Eigen's conjugate gradient with a diagonal preconditioner, pins eliminated and
+// contacts answered after the step; the student's filtered PCG (ex 7.3), pins and contacts held
+// by per-node filters inside the solve; and the same filtered CG preconditioned by a multigrid
+// V-cycle on the cloth's grid (cloth_multigrid.hpp), pins eliminated too, the fast one.
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include <kit/cloth_implicit_matrix.hpp>
+#include <kit/cloth_multigrid.hpp>
 #include <kit/cloth_system.hpp>
 
 namespace kit {
@@ -24,9 +27,12 @@ inline constexpr ImplicitMethod all_implicit_methods[] = {ImplicitMethod::linear
 const char* flag_name(ImplicitMethod method);     ///< "implicit-euler", "newton", "liu"
 const char* display_name(ImplicitMethod method);  ///< "implicit Euler (linearised)", ...
 
-enum class ImplicitSolver { cg, pcg };
-const char* flag_name(ImplicitSolver solver);     ///< "cg", "pcg"
-const char* display_name(ImplicitSolver solver);  ///< "Eigen CG", "filtered PCG"
+enum class ImplicitSolver { cg, pcg, mg };
+inline constexpr ImplicitSolver all_implicit_solvers[] = {ImplicitSolver::cg, ImplicitSolver::pcg, ImplicitSolver::mg};
+const char* flag_name(ImplicitSolver solver);     ///< "cg", "pcg", "mg"
+const char* display_name(ImplicitSolver solver);  ///< "Eigen CG", "filtered PCG", "multigrid PCG"
+/// True when the solver holds pins and contacts with Baraff & Witkin's filters (pcg, mg).
+inline bool filtered(ImplicitSolver solver) { return solver != ImplicitSolver::cg; }
 
 struct ImplicitSettings {
   ImplicitSolver solver = ImplicitSolver::pcg;
@@ -48,6 +54,7 @@ struct ImplicitWork {
   long newton_unconverged = 0;   ///< steps whose Newton iterations ran out above the tolerance
   long local_global = 0;         ///< Liu's local/global iterations
   long factorizations = 0;       ///< Liu's sparse Cholesky factorisations
+  long multigrid_setups = 0;     ///< multigrid hierarchies built for a matrix (--solver mg)
   long blocks = 0;               ///< spring stiffness blocks evaluated (ex 7.1)
   long assemblies = 0;           ///< matrices scattered
   long filtered_nodes = 0;       ///< node-steps held on a collider inside the solve
@@ -109,6 +116,7 @@ class BackwardEulerStepper : public ImplicitStepper {
   };
   std::vector<Hold> holds_;
   NodeArray f_, x1_, v1_;
+  std::optional<GridMultigrid> multigrid_;  ///< --solver mg: its levels, made once for the mesh
 };
 
 /// The stepper a method needs for this cloth (Liu's: cloth_liu.hpp).
