@@ -142,8 +142,10 @@ Eigen::VectorXd BackwardEulerStepper::solve(Eigen::VectorXd b, double tolerance)
   } else if (settings_.solver == ImplicitSolver::mg) {
     // Pins eliminated as well as filtered: the multigrid's coarse grids then never move them.
     matrix_.constrain(b);
-    multigrid_->setup(matrix_.matrix);
     ++work.multigrid_setups;
+    if (!multigrid_->setup(matrix_.matrix))
+      throw SolveFailed("A is not positive definite: the multigrid's coarsest Cholesky factorisation or a "
+                        "diagonal block's inverse failed");
     r = multigrid_pcg(matrix_.matrix, b, filters_, *multigrid_, tolerance, settings_.max_cg_iterations);
   } else {
     matrix_.constrain(b);

@@ -137,7 +137,7 @@ void GridMultigrid::add_coarser_level() {
   levels_.push_back(std::move(coarse));
 }
 
-void GridMultigrid::setup(const SparseMatrix& A) {
+bool GridMultigrid::setup(const SparseMatrix& A) {
   Level& finest = levels_[0];
   if (A.rows() != 3L * finest.nodes() || A.nonZeros() != 9L * Eigen::Index(finest.column.size()))
     throw std::invalid_argument("multigrid: A does not have the pattern the levels were built for");
@@ -166,17 +166,22 @@ void GridMultigrid::setup(const SparseMatrix& A) {
       for (int t = term_first[e]; t < term_first[e + 1]; ++t) out[target[t]] += weight[t] * block;
     }
   }
+  bool invertible = true;
   for (Level& level : levels_)
     for (int i = 0; i < level.nodes(); ++i) {
       const Block& d = level.values[std::size_t(level.first[std::size_t(i)] + level.diagonal[std::size_t(i)])];
-      level.inverse_diagonal[std::size_t(i)].topRows<3>() = d.topRows<3>().cast<double>().inverse().cast<float>();
+      Block& inverse = level.inverse_diagonal[std::size_t(i)];
+      inverse.topRows<3>() = d.topRows<3>().cast<double>().inverse().cast<float>();
+      invertible = invertible && inverse.allFinite();
     }
   const Level& last = levels_.back();
-  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(3 * last.nodes(), 3 * last.nodes());
+  coarsest_matrix_.setZero(3 * last.nodes(), 3 * last.nodes());
   for (int i = 0; i < last.nodes(); ++i)
     for (int e = last.first[std::size_t(i)]; e < last.first[std::size_t(i) + 1]; ++e)
-      dense.block<3, 3>(3 * i, 3 * last.column[std::size_t(e)]) = last.values[std::size_t(e)].topRows<3>().cast<double>();
-  coarsest_.compute(dense);
+      coarsest_matrix_.block<3, 3>(3 * i, 3 * last.column[std::size_t(e)]) =
+          last.values[std::size_t(e)].topRows<3>().cast<double>();
+  coarsest_.compute(coarsest_matrix_);
+  return invertible && coarsest_.info() == Eigen::Success;
 }
 
 // Σ_k A_ik x_k over node i's blocks begin ≤ k < end (to the last: end = −1): the columns of each
@@ -254,12 +259,21 @@ PcgResult multigrid_pcg(const SparseMatrix& A, const Eigen::VectorXd& b, const s
   const double start = residual.norm(), goal = tolerance * start;
   result.x.setZero(b.size());
   double residual_norm = residual.norm();
+  if (residual_norm <= goal || max_iterations <= 0) {  // nothing to do (S b = 0), or not allowed to
+    result.converged = residual_norm <= goal;
+    result.residual = start > 0 ? residual_norm / start : 0.0;
+    return result;
+  }
   // The search directions stay in S's range: the preconditioned residual is filtered again.
   multigrid.apply(residual, preconditioned);
   project(preconditioned);
   direction = preconditioned;
   double rho = residual.dot(preconditioned);
   while (residual_norm > goal && result.iterations < max_iterations) {
+    if (!(rho > 0)) {  // the cycle is not positive on this residual: no descent direction
+      result.negative_curvature = true;
+      break;
+    }
     product.noalias() = A * direction;
     project(product);
     ++result.iterations;

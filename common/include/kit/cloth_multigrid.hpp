@@ -3,13 +3,14 @@
 // (--solver mg). Diagonal-preconditioned CG needs about √κ iterations, and κ of the implicit
 // matrix grows like h² K / m times the grid's size: on the bench's stiff 81×81 sheet that is a
 // thousand iterations a step. One multigrid V-cycle removes the error at every wavelength at
-// once, fine waves by smoothing and long waves on coarser grids, so CG preconditioned by it
-// needs about ten whatever the stiffness or the resolution.
+// once, fine waves by smoothing and long waves on coarser grids: CG preconditioned by it needs
+// about ten there. Its count still grows on fine grids at extreme stiffness (bilinear
+// interpolation misses a stiff sheet's soft bending shapes), far more slowly than CG's.
 //
 //   - Levels: the grid's even-numbered nodes (and its last) make the next coarser grid, down to
 //     at most 6×6 nodes; a fine node takes the bilinear average of its coarse neighbours (P).
 //   - Coarse operators: A_c = Pᵀ A P (Galerkin), built each step from that step's A through a
-//     plan made once per mesh, with no search and no allocation.
+//     plan made once per mesh: no search, no sort.
 //   - Smoother: node-block Gauss–Seidel (3×3 blocks), forward before the coarse correction and
 //     backward after it, so that the cycle is a symmetric positive definite operator, as CG
 //     needs; the coarsest grid is solved exactly (dense Cholesky).
@@ -35,9 +36,11 @@ class GridMultigrid {
   /// block columns in order (ImplicitMatrix's). Throws std::invalid_argument otherwise.
   GridMultigrid(int nx, int ny, const SparseMatrix& pattern);
 
-  /// Takes this step's A (same pattern, positive definite): the coarse operators Pᵀ A P, the
-  /// inverses of the diagonal blocks, the coarsest Cholesky factor.
-  void setup(const SparseMatrix& A);
+  /// Takes this step's A (same pattern): the coarse operators Pᵀ A P, the inverses of the
+  /// diagonal blocks, the coarsest Cholesky factor. False when A is seen not to be positive
+  /// definite (a diagonal block with no finite inverse, or a coarsest matrix Cholesky rejects):
+  /// the cycle is then no preconditioner for CG.
+  bool setup(const SparseMatrix& A);
   /// z = B r, one V(1,1)-cycle from zero: B ≈ A⁻¹, symmetric positive definite (to the
   /// rounding of single precision, in which the cycle runs: it only has to point CG the right way,
   /// and half the bytes make it twice as fast; CG itself stays in double).
@@ -83,6 +86,7 @@ class GridMultigrid {
 
   std::vector<Level> levels_;
   std::vector<int> csr_first_;  ///< per node of the finest level: where its rows start in A's values
+  Eigen::MatrixXd coarsest_matrix_;
   Eigen::LLT<Eigen::MatrixXd> coarsest_;
   Eigen::VectorXd coarsest_b_;
 };
@@ -90,7 +94,8 @@ class GridMultigrid {
 /// Baraff & Witkin's filtered CG (ex 7.3's method and report) preconditioned by one V-cycle of
 /// `multigrid` instead of diag(A): solves S(A x − b) = 0 with x = S x, to ‖S(b − A x)‖ ≤
 /// tolerance ‖S b‖, from x = 0. `multigrid` must have been set up with A. Counts its products
-/// with A, which are also its V-cycles.
+/// with A (it applies as many V-cycles). negative_curvature also reports a search direction on
+/// which the cycle itself is not positive (rᵀ S B S r ≤ 0).
 PcgResult multigrid_pcg(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Matrix3>& filters,
                         GridMultigrid& multigrid, double tolerance, int max_iterations);
 
