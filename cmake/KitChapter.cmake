@@ -1,15 +1,21 @@
-# kit_add_chapter(NN-name): one chapter executable from chapters/NN-name/main.cpp, named
-# after its folder, linked to the shared library and the selected methods. Its default
-# figure folder is <build>/figures/NN-name.
-function(kit_add_chapter name)
-  add_executable(${name} "${CMAKE_CURRENT_SOURCE_DIR}/${name}/main.cpp")
-  target_link_libraries(${name} PRIVATE kit::common kit::methods)
+# kit_chapter_settings(TARGET NN-name): what chapters/NN-name/main.cpp needs to compile and link
+# in TARGET: the shared library, the selected methods, the chapters' glue and the chapter's names.
+# Its default figure folder is <build>/figures/NN-name.
+function(kit_chapter_settings target name)
+  target_link_libraries(${target} PRIVATE kit::common kit::methods)
   # Glue that wires the selected methods to the chapters' models (spring_steppers.hpp).
-  target_include_directories(${name} PRIVATE "${PROJECT_SOURCE_DIR}/chapters/shared")
-  target_compile_options(${name} PRIVATE ${KIT_WARNINGS})
-  target_compile_definitions(${name} PRIVATE
+  target_include_directories(${target} PRIVATE "${PROJECT_SOURCE_DIR}/chapters/shared")
+  target_compile_definitions(${target} PRIVATE
     KIT_CHAPTER_NAME="${name}"
     KIT_DEFAULT_FIGURE_DIR="${PROJECT_BINARY_DIR}/figures/${name}"
-    KIT_CHAPTER_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}/${name}")
+    KIT_CHAPTER_SOURCE_DIR="${PROJECT_SOURCE_DIR}/chapters/${name}")
+endfunction()
+
+# kit_add_chapter(NN-name): one chapter executable from chapters/NN-name/main.cpp, named after
+# its folder, in <build>/bin.
+function(kit_add_chapter name)
+  add_executable(${name} "${PROJECT_SOURCE_DIR}/chapters/${name}/main.cpp")
+  kit_chapter_settings(${name} ${name})
+  target_compile_options(${name} PRIVATE ${KIT_WARNINGS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${PROJECT_BINARY_DIR}/bin")
 endfunction()

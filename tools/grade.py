@@ -6,7 +6,8 @@ For each folder, in its own grade tree OUT/NAME/:
      (grading/submission.py); statically check them (grading/static_check.py);
   2. configure and build the graded programs against that copy, inside the sandbox
      (grading/sandbox.py), one program per exercise, `ninja -k 0` so a file that does not compile
-     costs only the exercises written in it;
+     costs only the exercises written in it; they link the kit's library as `./kit` built it once
+     for the batch (--common-library), so a tree compiles only its graded programs;
   3. run each graded program inside the sandbox, with a memory limit, a timeout (wall clock and
      CPU seconds) and no right to start a process, and read the evidence it writes on a channel
      the grader opened (grading/evidence.py);
@@ -18,6 +19,7 @@ and writes tests/grading/expected_evidence.json: the test cases of each exercise
 assertion counts, which a submission's run must match.
 """
 import argparse
+import filecmp
 import hashlib
 import math
 import json
@@ -25,6 +27,7 @@ import os
 import pathlib
 import random
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -116,10 +119,24 @@ def verdict(exercise, binary, run, expected, errors, findings):
     return status, reason
 
 
-def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout):
+def shared_library(library, tree):
+    """The kit's prebuilt library (`--common-library`), copied into the tree, whose build sees
+    nothing of the kit's build folder; copied only when it changed, keeping its time stamp, so
+    that a regrade relinks nothing. Returns the path for KIT_COMMON_LIBRARY ("" without one)."""
+    if not library:
+        return ""
+    copy = tree / "kit-common" / "libkit_common.a"
+    copy.parent.mkdir(exist_ok=True)
+    if not copy.exists() or not filecmp.cmp(library, copy, shallow=False):
+        shutil.copy2(library, copy)
+    return str(copy)
+
+
+def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, library):
     tree = out / label
     tree.mkdir(parents=True, exist_ok=True)
     src, build = tree / "src", tree / "build"
+    common = shared_library(library, tree)
     allowed = submission.exercise_files(points)
     copied, missing, ignored = submission.snapshot(folder, allowed, src)
     kit_headers = static_check.kit_public_headers(ROOT)
@@ -128,12 +145,14 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout):
         findings += static_check.check((src / name).read_text(encoding="utf-8", errors="replace"), name,
                                        kit_headers, set(allowed))
     cache = build / "CMakeCache.txt"
-    configured = cache.exists() and f"KIT_IMPL:STRING={src}" in cache.read_text(encoding="utf-8", errors="replace") \
+    cached = cache.read_text(encoding="utf-8", errors="replace") if cache.exists() else ""
+    configured = f"KIT_IMPL:STRING={src}\n" in cached and f"KIT_COMMON_LIBRARY:FILEPATH={common}\n" in cached \
         and (build / "build.ninja").exists()
     log = ""
     if not configured:
         code, log = run_limited(sandbox.wrap(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja",
-                                              "-DCMAKE_BUILD_TYPE=Release", f"-DKIT_IMPL={src}", "-DKIT_GRADING_ONLY=ON"],
+                                              "-DCMAKE_BUILD_TYPE=Release", f"-DKIT_IMPL={src}", "-DKIT_GRADING_ONLY=ON",
+                                              f"-DKIT_COMMON_LIBRARY={common}"],
                                              tree, True, BUILD_LIMITS), 600)
         (tree / "configure.log").write_text(log, encoding="utf-8")
         configured = code == 0
@@ -205,7 +224,8 @@ def batch(args):
     for folder, label in zip(folders, labels_for(folders)):
         print(f"grading {folder}", file=sys.stderr, flush=True)
         try:
-            paths.append(grade_one(folder, label, out, points, expected, sandbox, args.jobs, args.timeout))
+            paths.append(grade_one(folder, label, out, points, expected, sandbox, args.jobs, args.timeout,
+                                   args.common_library))
         except (OSError, ValueError, UnicodeError) as error:  # one folder's failure never stops the batch
             print(f"grade: {folder}: could not be graded: {error}", file=sys.stderr)
             paths.append(out / label / "grade.json")  # absent or stale: the summary names it
@@ -256,6 +276,8 @@ def main():
     b.add_argument("--jobs", type=int, default=2)
     b.add_argument("--timeout", type=float, default=30.0, help="seconds per graded program")
     b.add_argument("--no-sandbox", action="store_true")
+    b.add_argument("--common-library", default="", help="a libkit_common.a built from this kit (./kit passes its "
+                   "own): the grade trees link it instead of each compiling the library")
     b.add_argument("folders", nargs="+")
     r = commands.add_parser("record-evidence", help="record the reference's cases and assertion counts")
     r.add_argument("build")

@@ -5,7 +5,6 @@
 // Each critical step is measured by bisection on long runs and printed beside theory.
 #include <kit/spring_flags.hpp>
 #include <kit/step_count.hpp>
-
 #include "spring_figures.hpp"
 
 namespace {
@@ -54,7 +53,8 @@ kit::SpringRuns every_scheme(kit::ChapterApp& app, const Setup& s) {
   for (const auto& [scheme, run] : runs) {
     const std::string status = run.diverged() ? run.trajectory.divergence->describe() : "finished";
     if (run.diverged()) app.diverged(kit::name(scheme), status);
-    const auto finished = [&](double v) { return run.diverged() ? kit::ReportValue{} : v; };
+    const bool diverged = run.diverged();  // a lambda may not capture a structured binding in clang 14
+    const auto finished = [diverged](double v) { return diverged ? kit::ReportValue{} : v; };
     const double x = run.trajectory.u.back()[0];
     table.row(kit::key(scheme), {std::string(kit::name(scheme)), finished(x), finished(std::abs(x - exact)),
               finished(run.energy_ratio), finished(run.growth), s.radius(scheme), status,

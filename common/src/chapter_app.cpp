@@ -13,6 +13,8 @@
 namespace kit {
 
 namespace {
+bool parse_only = false;  // set by the flag fuzzers (parse_only_for_fuzzing)
+
 /// Writes to `target`, but first erases the progress line from the terminal, so that the
 /// chapter's text and the line never mix.
 class ClearingBuffer : public std::streambuf {
@@ -147,6 +149,8 @@ void ChapterApp::diverged(const std::string& run, const std::string& what) {
   summary_["divergences"].push_back({{"run", run}, {"what", what}});
 }
 
+void ChapterApp::parse_only_for_fuzzing() { parse_only = true; }
+
 int ChapterApp::run(int argc, const char* const* argv, const std::function<void()>& body) {
   try {
     app_.parse(argc, argv);
@@ -161,6 +165,7 @@ int ChapterApp::run(int argc, const char* const* argv, const std::function<void(
     return exit_code::ok;
   }
   for (const auto& record : record_parameters_) record();
+  if (parse_only) return exit_code::ok;
   report_ = Report(text(), summary_);
   try {
     if (!options_.no_plot) check_output_folder(options_.out_dir);  // before any computation

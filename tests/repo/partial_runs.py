@@ -3,7 +3,8 @@
 solved copy of exercises/, runs every part whose exercises are written, prints the student's
 results for those, and names each other part with the exercise it waits for.
 
-Three trees are built, chapters only, as `./kit --impl DIR run` builds them:
+Three trees are built, chapters only, as `./kit --impl DIR run` builds them (on the kit's library
+built once):
   - "first": the first exercise of every chapter solved (1.1, 2.1, 3.1, 4.1, 5.1), and R(z) (2.4)
     without the symplectic step (2.3) it is drawn beside; the rest stubs;
   - "rest": the opposite;
@@ -11,7 +12,7 @@ Three trees are built, chapters only, as `./kit --impl DIR run` builds them:
 Each chapter must exit 0 with figures on, skip only parts whose exercise is not solved, and
 report the numbers of the parts that are (checked against what the lecture predicts).
 
-Usage: partial_runs.py WORK_DIR
+Usage: partial_runs.py WORK_DIR LIBKIT_COMMON
 """
 import json
 import math
@@ -38,9 +39,10 @@ def write_tree(path, solved):
         target.write_text(text, encoding="utf-8")
 
 
-def build(tree, build_dir):
+def build(tree, build_dir, library):
     launcher = ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"] if shutil.which("ccache") else []
-    subprocess.run(["cmake", "--preset", "release", "-B", str(build_dir), f"-DKIT_IMPL={tree}", *launcher],
+    subprocess.run(["cmake", "--preset", "release", "-B", str(build_dir), f"-DKIT_IMPL={tree}",
+                    f"-DKIT_COMMON_LIBRARY={library}", *launcher],
                    cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
     jobs = os.environ.get("KIT_JOBS", str(os.cpu_count() or 2))
     subprocess.run(["cmake", "--build", str(build_dir), "-j", jobs, "--target", *CHAPTERS], cwd=ROOT, check=True,
@@ -176,13 +178,14 @@ def expectations(tree):
 
 def main(argv):
     work = pathlib.Path(argv[1]).resolve()
+    library = argv[2]  # the test build's libkit_common.a: the trees differ only in their exercises
     points = json.loads((ROOT / "tests/grading/points.json").read_text(encoding="utf-8"))["exercises"]
     every = {e["id"] for e in points}
     problems = []
     for tree, solved in [("first", FIRST), ("rest", every - FIRST), ("none", set())]:
         source, build_dir = work / tree, work / f"{tree}-build"
         write_tree(source, solved)
-        build(source, build_dir)
+        build(source, build_dir, library)
         for chapter in CHAPTERS:
             try:
                 summary = run(build_dir, chapter, work / f"{tree}-figures" / chapter)

@@ -56,6 +56,10 @@ class ChapterApp {
   /// 2 on a usage error (message on stderr, nothing written), 1 on another failure.
   int run(int argc, const char* const* argv, const std::function<void()>& body);
 
+  /// For the flag fuzzers (tests/fuzz/fuzz_chapter_flags.cpp) only: from then on, run() parses
+  /// the flags, checks their ranges and records them, and returns before the body (0 or 2).
+  static void parse_only_for_fuzzing();
+
   const CommonOptions& options() const { return options_; }
   /// Human-readable output: stdout, or nowhere under --json or --quiet. Each write first erases
   /// the progress line, which the next report of work draws again below the text.
