@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
       linear_system(app, scene, *springs, implicit, run.dt);
     });
     app.section("large steps", {"stiffness"}, [&] { large_steps(app, scene, kernels, implicit, settings); });
-    app.section("the cost of accuracy", {"damping", "trade"},
+    app.section("the cost of accuracy", {"damping", "trade-timing"},
                 [&] { cost_of_accuracy(app, scene, kernels, implicit, settings); });
     app.section("the linear solver", {"solver"},
                 [&] { solver_cost(app, scene, kernels, implicit, settings); });

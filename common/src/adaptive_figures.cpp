@@ -47,7 +47,7 @@ Figure step_size_figure(const OrbitProblem& problem, const AdaptiveRun<Vec4>& ru
 }
 
 Figure work_figure(const std::vector<WorkCurve>& curves, const OrbitProblem& problem, bool by_time) {
-  Figure figure(by_time ? "work-precision-time" : "work-precision",
+  Figure figure(by_time ? "work-precision-timing" : "work-precision",
                 fmt::format("{} ({})", by_time ? "Error reached against wall time (this machine, this run)"
                                                : "Error reached against right-hand-side evaluations",
                             problem.name));

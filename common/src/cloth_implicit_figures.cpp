@@ -75,7 +75,7 @@ Figure cloth_damping_figure(const Trade& trade, const std::string& scene) {
 }
 
 Figure cloth_trade_figure(const Trade& trade, const std::string& scene) {
-  Figure fig("trade", fmt::format("The cost of accuracy on '{}' ({} nodes across, K = {:.3g} N/m): error at t = {:.3g} s",
+  Figure fig("trade-timing", fmt::format("The cost of accuracy on '{}' ({} nodes across, K = {:.3g} N/m): error at t = {:.3g} s",
                                   scene, trade.n, trade.stiffness, trade.t_end));
   auto& p = fig.panel("wall time of the run [s]", "RMS node-position error [m]  (against RK4 at a twentieth of its limit)");
   p.logx = p.logy = true;

@@ -166,7 +166,7 @@ TEST_CASE("chapter 4 writes its five figures, with no gnuplot warning") {
   const auto result = kit::test::run_process(binary, {"--quiet", "--out", out.path().string()});
   REQUIRE(result.exit_code == 0);
   CHECK(result.err.empty());
-  for (const char* name : {"orbit", "step-sizes", "work-precision", "work-precision-time", "van-der-pol"})
+  for (const char* name : {"orbit", "step-sizes", "work-precision", "work-precision-timing", "van-der-pol"})
     CHECK(std::filesystem::file_size(out.path() / (std::string(name) + ".png")) > 1000);
 }
 

@@ -23,7 +23,7 @@ Figure orbit_figure(const OrbitProblem& problem, const AdaptiveRun<Vec4>& run, c
 Figure step_size_figure(const OrbitProblem& problem, const AdaptiveRun<Vec4>& run, const std::string& method,
                         const std::string& look);
 /// max |y(T) − reference| against evaluations (by_time = false, "work-precision") or wall time [s]
-/// ("work-precision-time"), log-log. Errors below 1e-16 are drawn at 1e-16.
+/// ("work-precision-timing"), log-log. Errors below 1e-16 are drawn at 1e-16.
 Figure work_figure(const std::vector<WorkCurve>& curves, const OrbitProblem& problem, bool by_time);
 /// x(t) above h(t) of DOPRI5 on Van der Pol; beyond 20 000 accepted steps every k-th is drawn,
 /// and the legend says so.

@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""An interrupted chapter leaves no half-written file: every chapter, figures on, is stopped
+three times:
+  - Ctrl-C: SIGINT to its whole process group (gnuplot and ffmpeg included), at the first
+    temporary file that appears in its output folder (in the middle of a write);
+  - a timeout: SIGTERM to the chapter alone, at the third temporary;
+  - Ctrl-C again, half-way through the time a whole run takes (timed first): in its frames or
+    videos for the chapters that write them.
+Then: the chapter died of that signal; no temporary (NAME.tmp-PID) is left in its folder or in
+its TMPDIR, once its helpers have ended; every figure and frame there is whole (a PNG ends in
+its IEND chunk, a PDF in %%EOF, a GIF in its trailer, a text file in a newline).
+
+Usage: interrupted_runs.py BIN_DIR WORK_DIR
+"""
+import os
+import pathlib
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+ENDINGS = {".png": b"IEND\xaeB`\x82", ".gif": b";", ".dat": b"\n", ".gp": b"\n"}
+
+
+def temporaries(folder):
+    return sorted(str(p) for p in folder.rglob("*") if ".tmp-" in p.name)
+
+
+def torn(path):
+    """Why the file at `path` is not whole, or None."""
+    data = path.read_bytes()
+    if not data:
+        return "is empty"
+    if path.suffix == ".pdf":
+        return None if data.rstrip().endswith(b"%%EOF") else "has no %%EOF at its end"
+    ending = ENDINGS.get(path.suffix)
+    return None if ending is None or data.endswith(ending) else f"does not end in {ending!r}"
+
+
+def group_gone(pgid, seconds):
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        try:
+            os.killpg(pgid, 0)
+        except ProcessLookupError:
+            return True
+        time.sleep(0.05)
+    return False
+
+
+def interrupt(binary, out, tmp, sig, whole_group, at_temporary=None, at_seconds=None):
+    """Runs the chapter and signals it at its `at_temporary`-th temporary file, or `at_seconds`
+    after its start; returns the problems found."""
+    for folder in (out, tmp):
+        shutil.rmtree(folder, ignore_errors=True)
+        folder.mkdir(parents=True)
+    name = f"{binary.name} ({signal.Signals(sig).name} to the {'group' if whole_group else 'chapter'})"
+    process = subprocess.Popen([str(binary), "--quiet", "--out", str(out)], stdout=subprocess.DEVNULL,
+                               stderr=subprocess.PIPE, start_new_session=True, env=dict(os.environ, TMPDIR=str(tmp)))
+    seen, started = set(), time.monotonic()
+    while process.poll() is None and (len(seen) < at_temporary if at_temporary else
+                                      time.monotonic() - started < at_seconds):
+        seen.update(temporaries(out))
+        time.sleep(0.005)
+    if process.poll() is not None:
+        return [f"{name}: finished (exit {process.returncode}) before it could be stopped"]
+    (os.killpg if whole_group else os.kill)(process.pid, sig)
+    try:
+        code = process.wait(timeout=120)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        return [f"{name}: still running 120 s after the signal"]
+    problems = []
+    if code != -sig:
+        problems.append(f"{name}: ended with {code}, not by the signal: {process.stderr.read().decode()[-300:]}")
+    if not group_gone(process.pid, 60):
+        problems.append(f"{name}: its helpers still run 60 s later")
+        os.killpg(process.pid, signal.SIGKILL)
+    left = temporaries(out) + temporaries(tmp)
+    if left:
+        problems.append(f"{name}: temporary files left: {left[:5]}")
+    files = [p for p in out.rglob("*") if p.is_file()]
+    problems += [f"{name}: {p.relative_to(out)} {why}" for p in files if (why := torn(p))]
+    when = f"temporary {len(seen)}" if at_temporary else f"{at_seconds:.1f} s"
+    print(f"{name}: stopped at {when} ({max(seen, default='/none').rsplit('/', 1)[-1]}); "
+          f"{len(files)} files kept; {'ok' if not problems else 'PROBLEMS'}", flush=True)
+    return problems
+
+
+def main(argv):
+    bin_dir, work = pathlib.Path(argv[1]), pathlib.Path(argv[2]).resolve()
+    problems = []
+    for binary in sorted(p for p in bin_dir.iterdir() if p.is_file() and p.name[:2].isdigit()):
+        for sig, whole_group, at in ((signal.SIGINT, True, 1), (signal.SIGTERM, False, 3)):
+            case = work / binary.name / signal.Signals(sig).name
+            problems += interrupt(binary, case / "out", case / "tmp", sig, whole_group, at_temporary=at)
+        started = time.monotonic()
+        whole = subprocess.run([str(binary), "--quiet", "--out", str(work / binary.name / "whole")],
+                               capture_output=True, timeout=900)
+        if whole.returncode != 0:
+            problems.append(f"{binary.name}: a whole run exits {whole.returncode}")
+            continue
+        case = work / binary.name / "half-way"
+        problems += interrupt(binary, case / "out", case / "tmp", signal.SIGINT, True,
+                              at_seconds=(time.monotonic() - started) / 2)
+    for problem in problems:
+        print("FAILED:", problem)
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""Every chapter, run twice with the same flags and seed, writes byte-identical files and the
+same --json summary. Timings are the one exception, and they are named so: a file whose name
+holds "timing"; a summary field with "timing" in its name or a unit of time (seconds, ms, us,
+ns) as one of its words ("seconds", "scatter_ms", "ns_per_step"). PDFs count
+too: the runs set SOURCE_DATE_EPOCH, which fixes the creation date cairo would take from the
+clock (figure.cpp).
+
+Usage: reproducible_outputs.py BIN_DIR WORK_DIR
+"""
+import json
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+
+EPOCH = "1700000000"
+
+
+def is_timing_key(key):
+    """A field named as a timing: "timing" in it, or a unit of time as one of its words."""
+    return "timing" in key or bool({"seconds", "ms", "us", "ns"} & set(key.split("_")))
+
+
+def without_timings(value, out_dir):
+    """The summary with timing fields dropped and the run's own folder written as OUT."""
+    if isinstance(value, dict):
+        return {k: without_timings(v, out_dir) for k, v in value.items() if not is_timing_key(k)}
+    if isinstance(value, list):
+        return [without_timings(v, out_dir) for v in value]
+    if isinstance(value, str):
+        return value.replace(str(out_dir), "OUT")
+    return value
+
+
+def run(binary, out_dir):
+    env = dict(os.environ, SOURCE_DATE_EPOCH=EPOCH)
+    done = subprocess.run([str(binary), "--json", "--out", str(out_dir)], capture_output=True, text=True,
+                          env=env, timeout=900)
+    if done.returncode != 0:
+        raise AssertionError(f"{binary.name}: exit {done.returncode}: {done.stderr.strip()[:400]}")
+    files = {str(p.relative_to(out_dir)): p.read_bytes() for p in sorted(out_dir.rglob("*")) if p.is_file()}
+    return without_timings(json.loads(done.stdout), out_dir), files
+
+
+def main(argv):
+    bin_dir, work = pathlib.Path(argv[1]), pathlib.Path(argv[2]).resolve()
+    shutil.rmtree(work, ignore_errors=True)
+    problems = []
+    for binary in sorted(p for p in bin_dir.iterdir() if p.is_file() and p.name[:2].isdigit()):
+        try:
+            first = run(binary, work / "first" / binary.name)
+            second = run(binary, work / "second" / binary.name)
+        except (AssertionError, subprocess.TimeoutExpired) as error:
+            problems.append(str(error))
+            continue
+        (summary_a, files_a), (summary_b, files_b) = first, second
+        found = []
+        if summary_a != summary_b:
+            keys = sorted(k for k in set(summary_a) | set(summary_b) if summary_a.get(k) != summary_b.get(k))
+            found.append(f"the --json summaries differ outside timings, under {keys}")
+        if set(files_a) != set(files_b):
+            found.append(f"different files: {sorted(set(files_a) ^ set(files_b))}")
+        differing = sorted(n for n in set(files_a) & set(files_b)
+                           if files_a[n] != files_b[n] and "timing" not in pathlib.Path(n).name)
+        if differing:
+            found.append(f"files differ: {differing}")
+        timing_files = sum(1 for n in files_a if "timing" in pathlib.Path(n).name)
+        print(f"{binary.name}: {len(files_a)} files ({timing_files} of timings), "
+              f"{'identical' if not found else 'NOT identical'}")
+        problems += [f"{binary.name}: {f}" for f in found]
+    for problem in problems:
+        print("FAILED:", problem)
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
