@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# build_slides.sh DECK FIGURE_DIR OUT_DIR: builds slides/DECK.tex into OUT_DIR/DECK.pdf.
+# build_slides.sh DECK FIGURE_DIR OUT_DIR: builds slides/DECK.tex into OUT_DIR/DECK.pdf. DECK
+# "course" is every chapter deck in one PDF: they must be in OUT_DIR already.
 # Figures resolve through TEXINPUTS against FIGURE_DIR (\includegraphics{01-free-fall/x.pdf}),
 # so a missing or misnamed figure stops the build with an error.
 set -euo pipefail
@@ -7,11 +8,27 @@ deck=$1 figures=$2 out=$3
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 [ -f "$root/slides/$deck.tex" ] || { echo "build_slides: no deck slides/$deck.tex" >&2; exit 2; }
 mkdir -p "$out"
-log="$out/$deck.latexmk.log"
-if ! TEXINPUTS="$figures//:$root/slides//:" latexmk -g -pdf -interaction=nonstopmode -halt-on-error \
-      -outdir="$out" "$root/slides/$deck.tex" >"$log" 2>&1; then
-  echo "build_slides: $deck failed; the end of the LaTeX log:" >&2
-  grep -E -A3 "^!|not found" "$out/$deck.log" >&2 || tail -30 "$log" >&2
-  exit 1
+out=$(cd "$out" && pwd) figures=$(cd "$figures" && pwd)  # gnuplot runs from a figure's folder
+if [ "$deck" = course ]; then
+  # The course includes every chapter deck, built first into OUT_DIR: list them, with the title
+  # each deck gives itself, for course.tex.
+  : >"$out/course-decks.tex.tmp"
+  for tex in "$root"/slides/[0-9][0-9]-*.tex; do
+    name=$(basename "$tex" .tex)
+    [ -f "$out/$name.pdf" ] || { echo "build_slides: course: build the deck $name first ($out/$name.pdf)" >&2; exit 2; }
+    title=$(sed -n 's/^\\title{\(.*\)}$/\1/p' "$tex" | head -1)
+    printf '\\kitdeck{%s}{%s}\n' "$name" "${title:-$name}" >>"$out/course-decks.tex.tmp"
+  done
+  mv "$out/course-decks.tex.tmp" "$out/course-decks.tex"
 fi
+log="$out/$deck.latexmk.log"
+latex() {
+  if ! TEXINPUTS="$out:$figures//:$root/slides//:" latexmk -g -pdf -interaction=nonstopmode -halt-on-error \
+        -outdir="$out" "$root/slides/$deck.tex" >"$log" 2>&1; then
+    echo "build_slides: $deck failed; the end of the LaTeX log:" >&2
+    grep -E -A3 "^!|not found" "$out/$deck.log" >&2 || tail -30 "$log" >&2
+    exit 1
+  fi
+}
+latex
 echo "slides: $out/$deck.pdf"

@@ -186,8 +186,13 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
      << "#   gnuplot -e \"fmt='pdf'\" " << figure.name << ".gp     (fmt: pdf, png, svg; or 'show' for a window)\n"
      << "if (!exists(\"fmt\")) fmt = \"png\"\n"
      << "if (!exists(\"out\")) out = \"" << figure.name << ".\" . fmt\n"
-     << fmt::format("if (fmt eq \"pdf\") {{ set terminal pdfcairo enhanced color size {}in,{}in font \"Sans,11\" linewidth 1.5 }}\n",
-                    figure.width_in, figure.height_in)
+     << "# The PDF's size [in] and text size [pt]: a slide build sets them to the slot its deck gives\n"
+     << "# the figure (tools/build_slides.sh), so the slide shows the text at font_pt, not scaled down.\n"
+     << "if (!exists(\"width_in\")) width_in = " << figure.width_in << "\n"
+     << "if (!exists(\"height_in\")) height_in = " << figure.height_in << "\n"
+     << "if (!exists(\"font_pt\")) font_pt = 11\n"
+     << "if (fmt eq \"pdf\") { eval sprintf(\"set terminal pdfcairo enhanced color size %gin,%gin "
+        "font 'Sans,%g' linewidth 1.5\", width_in, height_in, font_pt) }\n"
      << fmt::format("if (fmt eq \"png\") {{ set terminal pngcairo enhanced color size {},{} font \"Sans,10\" linewidth 1.5 }}\n",
                     static_cast<int>(figure.width_in * 150), static_cast<int>(figure.height_in * 150))
      << fmt::format("if (fmt eq \"svg\") {{ set terminal svg enhanced size {},{} font \"Sans,10\" linewidth 1.5 background \"white\" }}\n",
@@ -196,7 +201,7 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
      << "set encoding utf8\n"
      << "data = " << quoted(data_file) << "\n";
   const bool multi = figure.panels.size() > 1;
-  if (multi) gp << "set multiplot title " << quoted(figure.title) << " font \",11\"\n";
+  if (multi) gp << "set multiplot title " << quoted(figure.title) << " font sprintf(\",%g\", font_pt)\n";
   int index = 0;
   const int columns = std::max(1, figure.columns);
   const int rows = static_cast<int>((figure.panels.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
