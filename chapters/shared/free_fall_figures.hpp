@@ -2,6 +2,8 @@
 // Chapter 1's four figures, each with its sign convention (ERRATA item 3): the trajectories
 // against the parabola, the error growing linearly in time, the orders, and round-off. Chapter
 // specific: the error-vs-time figure runs the selected Euler methods at Δt/2 and Δt/4.
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -54,6 +56,16 @@ inline Figure trajectories_figure(const FreeFall& fall, double dt, double t_end,
   below.place = {{0.0, 0.0, 1.0, 0.36}};
   for (const auto& [name, run, style] : schemes)
     if (*run) below.add({name, (*run)->t, gap(fall, **run), "linespoints", style});
+  // A short panel: about three y tics, at a step of 1, 2 or 5 times a power of ten.
+  double largest = 0;
+  for (const auto& series : below.series)
+    for (double y : series.y) largest = std::max(largest, std::isfinite(y) ? std::abs(y) : 0.0);
+  if (largest > 0) {
+    const double decade = std::pow(10.0, std::floor(std::log10(largest / 2))), wanted = largest / 2;
+    const double step = wanted <= decade ? decade : wanted <= 2 * decade ? 2 * decade
+                        : wanted <= 5 * decade ? 5 * decade : 10 * decade;
+    below.commands.push_back(fmt::format("set ytics {:g}", step));
+  }
   return figure;
 }
 

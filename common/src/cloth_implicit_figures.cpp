@@ -69,7 +69,8 @@ Figure cloth_damping_figure(const Trade& trade, const std::string& scene) {
     if (!h.empty()) p.add({name, h, lost, "linespoints", cloth_method_style(key) + " lw 2 pt 7"});
   }
   if (hi > lo) {
-    p.line("the energy the motion exchanges", {lo, hi}, {trade.energy_scale, trade.energy_scale}, look::prediction);
+    p.line(fmt::format("the swing's largest kinetic energy (t ≤ {:.3g} s)", trade.t_end), {lo, hi},
+           {trade.energy_scale, trade.energy_scale}, look::prediction);
   }
   return fig;
 }

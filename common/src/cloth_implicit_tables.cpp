@@ -25,6 +25,9 @@ void print_trade_table(Report& report, const Trade& trade) {
   for (const auto& r : trade.runs)
     table.row({r.key, r.dt, long(r.iterations), r.error, r.energy_lost, r.seconds, r.failed});
   table.print();
+  report.say("damping_scale", "The swing's largest kinetic energy before t = {t_end} s (the reference, from rest): "
+             "{motion_energy:.3e} J, the scale of the energy a method removes.\n",
+             {{"t_end", trade.t_end}, {"motion_energy", trade.energy_scale}});
 }
 
 void print_solver_table(Report& report, const std::vector<SolverPoint>& points) {

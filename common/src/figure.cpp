@@ -92,14 +92,47 @@ std::string shell_quoted(const std::string& text) {
   return out + "'";
 }
 
-// A gnuplot double-quoted string literal.
+// A gnuplot double-quoted string literal; a line break becomes gnuplot's \n.
 std::string quoted(const std::string& text) {
   std::string out = "\"";
   for (char c : text) {
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
     if (c == '"' || c == '\\') out += '\\';
     out += c;
   }
   return out + "\"";
+}
+
+// `text` on two lines when it is longer than `width` characters: broken at the ", ", ": " or
+// " (" nearest its middle, else at the space nearest it. A long axis label otherwise runs off a short panel, and a long title
+// off a narrow figure, once the figure is drawn at the size of its slide.
+std::string wrapped(const std::string& text, std::size_t width) {
+  std::size_t characters = 0;  // UTF-8: count the bytes that start a character
+  for (unsigned char c : text) characters += (c & 0xC0) != 0x80;
+  if (characters <= width) return text;
+  std::size_t best = std::string::npos;
+  const std::size_t middle = text.size() / 2;
+  for (const char* separator : {", ", ": ", " ("}) {
+    for (auto at = text.find(separator); at != std::string::npos; at = text.find(separator, at + 1)) {
+      const std::size_t cut = separator[0] == ' ' ? at : at + 1;  // keep "(" on the second line
+      const auto distance = [middle](std::size_t i) { return i > middle ? i - middle : middle - i; };
+      if (best == std::string::npos || distance(cut) < distance(best)) best = cut;
+    }
+  }
+  for (auto at = text.find(' '); best == std::string::npos && at != std::string::npos;) {
+    std::size_t nearest = at;  // the first space; then the one nearest the middle
+    for (; at != std::string::npos; at = text.find(' ', at + 1))
+      if ((at > middle ? at - middle : middle - at) < (nearest > middle ? nearest - middle : middle - nearest))
+        nearest = at;
+    best = nearest;
+  }
+  if (best == std::string::npos) return text;
+  std::string head = text.substr(0, best), tail = text.substr(best);
+  while (!tail.empty() && tail.front() == ' ') tail.erase(0, 1);
+  return head + "\n" + tail;
 }
 
 // A value gnuplot reads: NaN and ±Inf are written as NaN (an undefined point, not drawn).
@@ -201,7 +234,7 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
      << "set encoding utf8\n"
      << "data = " << quoted(data_file) << "\n";
   const bool multi = figure.panels.size() > 1;
-  if (multi) gp << "set multiplot title " << quoted(figure.title) << " font sprintf(\",%g\", font_pt)\n";
+  if (multi) gp << "set multiplot title " << quoted(wrapped(figure.title, 80)) << " font sprintf(\",%g\", font_pt)\n";
   int index = 0;
   const int columns = std::max(1, figure.columns);
   const int rows = static_cast<int>((figure.panels.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
@@ -216,12 +249,12 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
           cell_width * column, 0.92 - cell_height * (row + 1), cell_width, cell_height});
       gp << fmt::format("set origin {},{}\nset size {},{}\n", place[0], place[1], place[2], place[3]);
     }
-    const std::string title = multi ? panel.title : (panel.title.empty() ? figure.title : figure.title + "\\n" + panel.title);
-    gp << "set title " << quoted(title) << "\n"
-       << "set xlabel " << quoted(panel.xlabel) << "\n"
-       << "set ylabel " << quoted(panel.ylabel) << "\n"
+    const std::string title = multi ? panel.title : (panel.title.empty() ? figure.title : figure.title + "\n" + panel.title);
+    gp << "set title " << quoted(wrapped(title, 72)) << "\n"
+       << "set xlabel " << quoted(wrapped(panel.xlabel, 80)) << "\n"
+       << "set ylabel " << quoted(wrapped(panel.ylabel, rows > 1 ? 24 : 34)) << "\n"
        << "set grid lc rgb '#dddddd'\n"
-       << "set key " << panel.key << " box opaque samplen 2\n";
+       << "set key " << panel.key << " box opaque samplen 2 spacing 1.2\n";  // room for sub- and superscripts
     if (figure.left_edge) gp << fmt::format("set lmargin at screen {}\n", *figure.left_edge);
     if (figure.right_edge) gp << fmt::format("set rmargin at screen {}\n", *figure.right_edge);
     if (panel.logx) gp << "set logscale x\nset format x \"10^{%L}\"\n";

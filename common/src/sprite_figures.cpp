@@ -36,7 +36,10 @@ Figure trade_figure(const TradeCurves& curves, const SpriteCamera& camera, doubl
                            fmt::format("error on screen [px], {}×{}", camera.width(), camera.height()),
                            "what the error means on screen (default camera)");
   double lo = INFINITY, hi = 0;
-  for (Panel* p : {&metres, &pixels}) p->logx = p->logy = true;
+  for (Panel* p : {&metres, &pixels}) {
+    p->logx = p->logy = true;
+    p->commands.push_back("set ytics 1e-16, 1e4");  // a tic every 4 decades: the panels span up to 20
+  }
   for (const auto& [integrator, runs] : curves) {
     std::vector<double> rate, error, px;
     for (const TradeRun& run : runs) {

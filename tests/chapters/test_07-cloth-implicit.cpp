@@ -452,6 +452,15 @@ TEST_CASE("chapter 7: the printed numbers are the ones measured") {
     for (std::size_t k = 1; k < errors[method].size(); ++k) CHECK(errors[method][k] < errors[method][k - 1]);
   const auto& implicit = errors["implicit-euler"];
   CHECK(implicit[implicit.size() - 2] / implicit.back() == Approx(2).epsilon(0.2));
+  // The damping figure's scale: the swing's largest kinetic energy, from rest. Each implicit
+  // method removes energy, of the order of what the motion exchanges and not far beyond it.
+  const double motion = j["damping_scale"]["motion_energy"];
+  CHECK(motion > 0);
+  for (const json& row : j["trade"])
+    if (row["method"] == "implicit-euler" || row["method"] == "newton") {
+      CHECK(row["energy_lost"].get<double>() > 0);
+      CHECK(row["energy_lost"].get<double>() < 2 * motion);
+    }
   for (const json& row : j["solver"]) CHECK(row["unconverged"] == 0);
   CHECK(j["run"]["steps"] == 90);
   CHECK(j["run"]["deepest"].get<double>() < 1e-9);

@@ -137,7 +137,7 @@ def expectations(tree):
                 s["integrators"]["euler"]["fitted_order"], 1, 0.05) and "contact_sheet" not in s.get("figures", {}))],
             "06-cloth-explicit": [("every figure waits", lambda s: {"stability", "energy", "mesh"}
                                    <= set(s.get("figures_waiting", [])) and not s.get("figures"))],
-            "07-cloth-implicit": [("every figure waits", lambda s: {"stiffness", "damping", "trade", "solver"}
+            "07-cloth-implicit": [("every figure waits", lambda s: {"stiffness", "damping", "trade-timing", "solver"}
                                    <= set(s.get("figures_waiting", [])) and not s.get("figures"))],
         }
     return {

@@ -87,7 +87,7 @@ struct Trade {
   double t_end = 0;           ///< [s]
   double reference_dt = 0;    ///< RK4's step for the reference, a twentieth of its limit [s]
   double reference_energy_drift = 0;  ///< |E(t_end) − E(0)| of the reference [J]
-  double energy_scale = 0;    ///< |E(0) − E_ref(t_end)|: the energy the motion exchanges [J]
+  double energy_scale = 0;    ///< the reference's largest kinetic energy over [0, t_end], from rest [J]
   double dt_max = 0;          ///< symplectic Euler's measured limit [s]
   std::vector<TradeRun> runs;
 };
