@@ -184,8 +184,8 @@ std::string read_file(const std::filesystem::path& path) {
 
 // With SOURCE_DATE_EPOCH set (reproducible builds), a PDF's creation date becomes that time, so
 // that two renders of the same figure are byte-identical: cairo 1.16, which gnuplot's pdfcairo
-// uses, always writes the clock's. The date keeps its length (YYYYMMDDHHmmSS then "Z" or
-// "+00'00'"), so the cross-reference offsets stay right; any other form is left alone.
+// uses, always writes the clock's. The date keeps its length (YYYYMMDDHHmmSS then "Z", "+00'00"
+// or "+00'00'"), so the cross-reference offsets stay right; any other form is left alone.
 void pin_pdf_creation_date(const std::filesystem::path& pdf) {
   const char* epoch_text = std::getenv("SOURCE_DATE_EPOCH");
   if (!epoch_text) return;
@@ -204,7 +204,9 @@ void pin_pdf_creation_date(const std::filesystem::path& pdf) {
   const std::string stamp = fmt::format("{:04}{:02}{:02}{:02}{:02}{:02}", utc.tm_year + 1900, utc.tm_mon + 1,
                                         utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec);
   const std::size_t length = close - start;
-  const std::string date = length == 15 ? stamp + "Z" : length == 21 ? stamp + "+00'00'" : "";
+  // cairo writes "Z" in UTC and "+HH'MM" elsewhere; some writers close with a last "'".
+  const std::string date = length == 15 ? stamp + "Z" : length == 20 ? stamp + "+00'00"
+                           : length == 21 ? stamp + "+00'00'" : "";
   if (date.empty()) return;
   bytes.replace(start, length, date);
   std::ofstream(pdf, std::ios::binary | std::ios::trunc) << bytes;

@@ -38,6 +38,13 @@ def torn(path):
     return None if ending is None or data.endswith(ending) else f"does not end in {ending!r}"
 
 
+def kill_group(pgid):
+    try:
+        os.killpg(pgid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass  # it ended meanwhile
+
+
 def group_gone(pgid, seconds):
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline:
@@ -69,14 +76,14 @@ def interrupt(binary, out, tmp, sig, whole_group, at_temporary=None, at_seconds=
     try:
         code = process.wait(timeout=120)
     except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
+        kill_group(process.pid)
         return [f"{name}: still running 120 s after the signal"]
     problems = []
     if code != -sig:
         problems.append(f"{name}: ended with {code}, not by the signal: {process.stderr.read().decode()[-300:]}")
     if not group_gone(process.pid, 60):
         problems.append(f"{name}: its helpers still run 60 s later")
-        os.killpg(process.pid, signal.SIGKILL)
+        kill_group(process.pid)
     left = temporaries(out) + temporaries(tmp)
     if left:
         problems.append(f"{name}: temporary files left: {left[:5]}")
@@ -91,7 +98,13 @@ def interrupt(binary, out, tmp, sig, whole_group, at_temporary=None, at_seconds=
 def main(argv):
     bin_dir, work = pathlib.Path(argv[1]), pathlib.Path(argv[2]).resolve()
     problems = []
-    for binary in sorted(p for p in bin_dir.iterdir() if p.is_file() and p.name[:2].isdigit()):
+    binaries = sorted(p for p in bin_dir.iterdir() if p.is_file() and p.name[:2].isdigit())
+    chapters = sorted(d.name for d in (pathlib.Path(__file__).resolve().parents[2] / "chapters").glob("[0-9][0-9]-*")
+                      if (d / "main.cpp").exists())
+    if [b.name for b in binaries] != chapters:
+        print(f"FAILED: {bin_dir} holds {[b.name for b in binaries]}, not every chapter: {chapters}")
+        return 1
+    for binary in binaries:
         for sig, whole_group, at in ((signal.SIGINT, True, 1), (signal.SIGTERM, False, 3)):
             case = work / binary.name / signal.Signals(sig).name
             problems += interrupt(binary, case / "out", case / "tmp", sig, whole_group, at_temporary=at)
