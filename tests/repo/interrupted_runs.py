@@ -20,6 +20,8 @@ import subprocess
 import sys
 import time
 
+from chapter_binaries import chapter_binaries
+
 ENDINGS = {".png": b"IEND\xaeB`\x82", ".gif": b";", ".dat": b"\n", ".gp": b"\n"}
 
 
@@ -98,11 +100,10 @@ def interrupt(binary, out, tmp, sig, whole_group, at_temporary=None, at_seconds=
 def main(argv):
     bin_dir, work = pathlib.Path(argv[1]), pathlib.Path(argv[2]).resolve()
     problems = []
-    binaries = sorted(p for p in bin_dir.iterdir() if p.is_file() and p.name[:2].isdigit())
-    chapters = sorted(d.name for d in (pathlib.Path(__file__).resolve().parents[2] / "chapters").glob("[0-9][0-9]-*")
-                      if (d / "main.cpp").exists())
-    if [b.name for b in binaries] != chapters:
-        print(f"FAILED: {bin_dir} holds {[b.name for b in binaries]}, not every chapter: {chapters}")
+    try:
+        binaries = chapter_binaries(bin_dir)
+    except ValueError as why:
+        print(f"FAILED: {why}")
         return 1
     for binary in binaries:
         for sig, whole_group, at in ((signal.SIGINT, True, 1), (signal.SIGTERM, False, 3)):

@@ -15,6 +15,8 @@ import shutil
 import subprocess
 import sys
 
+from chapter_binaries import chapter_binaries
+
 EPOCH = "1700000000"
 
 
@@ -48,11 +50,10 @@ def main(argv):
     bin_dir, work = pathlib.Path(argv[1]), pathlib.Path(argv[2]).resolve()
     shutil.rmtree(work, ignore_errors=True)
     problems = []
-    binaries = sorted(p for p in bin_dir.iterdir() if p.is_file() and p.name[:2].isdigit())
-    chapters = sorted(d.name for d in (pathlib.Path(__file__).resolve().parents[2] / "chapters").glob("[0-9][0-9]-*")
-                      if (d / "main.cpp").exists())
-    if [b.name for b in binaries] != chapters:
-        print(f"FAILED: {bin_dir} holds {[b.name for b in binaries]}, not every chapter: {chapters}")
+    try:
+        binaries = chapter_binaries(bin_dir)
+    except ValueError as why:
+        print(f"FAILED: {why}")
         return 1
     for binary in binaries:
         try:
