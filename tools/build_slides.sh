@@ -33,13 +33,13 @@ latex() {
 latex
 # Each figure again, at the size of its slot on the slide (kit-slides.sty, \kitfigure), with 9 pt
 # text; then the deck once more, which places them at 1:1. 1 in = 72.27 pt = 72.27 * 65536 sp.
+inches() { awk -v sp="$1" 'BEGIN { printf "%.4f", sp / (72.27 * 65536) }'; }
 if [ -s "$out/$deck.kitfigures" ]; then
   while read -r name width height; do
     slide="$out/slide-figures/$name-${width}x${height}.pdf"
     script="$figures/$name.gp"
     [ -f "$slide" ] && [ "$slide" -nt "$script" ] && [ "$slide" -nt "$figures/$name.dat" ] && continue
     mkdir -p "$(dirname "$slide")"
-    inches() { awk -v sp="$1" 'BEGIN { printf "%.4f", sp / (72.27 * 65536) }'; }
     if ! (cd "$(dirname "$script")" && gnuplot -e "fmt='pdf'; out='$slide.tmp'; width_in=$(inches "$width");
           height_in=$(inches "$height"); font_pt=9" "$(basename "$script")") 2>"$slide.log"; then
       echo "build_slides: gnuplot could not redraw $name for its slide:" >&2
