@@ -75,12 +75,14 @@ RunOutcome run_ffmpeg(const std::filesystem::path& ffmpeg, const std::vector<std
   return {false, how};
 }
 
-// One video: ffmpeg writes a temporary sibling (its muxer named by -f, since the temporary's
-// name does not end in the extension), renamed onto `path` only when ffmpeg succeeded.
+// One video: ffmpeg writes into a private folder that a signal removes (so an ffmpeg that
+// outlives a SIGTERM sent to the chapter alone cannot leave its file behind), with its muxer
+// named by -f; the file is renamed onto `path` only when ffmpeg succeeded.
 RunOutcome encode_one(const std::filesystem::path& ffmpeg, std::vector<std::string> arguments, const char* muxer,
                       const std::filesystem::path& path) {
-  const auto log = temporary_sibling(path.parent_path() / (path.filename().string() + ".ffmpeg-log"));
-  const auto temporary = temporary_sibling(path);
+  ScratchFolder scratch(path);
+  const auto log = scratch.file(path.filename().string() + ".ffmpeg-log");
+  const auto temporary = scratch.file(path.filename().string());
   arguments.insert(arguments.end(), {"-f", muxer, temporary.string()});
   RunOutcome outcome = run_ffmpeg(ffmpeg, arguments, log);
   discard_temporary(log);

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <fstream>
@@ -9,28 +10,48 @@
 #include <system_error>
 
 #include <fmt/format.h>
+#include <time.h>
 #include <unistd.h>
 
 namespace kit {
 namespace {
 
 // The temporaries in flight, in fixed storage that a signal handler may read: it calls only
-// unlink(2), which is async-signal-safe. Slots are claimed and released by the main thread.
+// unlink(2), rmdir(2) and nanosleep(2), which are async-signal-safe. Slots are claimed and
+// released by the main thread; a slot holds a file or a scratch folder.
 constexpr std::size_t slots = 64, path_bytes = 4096;
+enum SlotKind : std::sig_atomic_t { free_slot = 0, file_slot = 1, folder_slot = 2 };
 std::array<std::array<char, path_bytes>, slots> in_flight{};
 std::array<volatile std::sig_atomic_t, slots> occupied{};
 
 constexpr std::array<int, 3> cleanup_signals{SIGTERM, SIGINT, SIGHUP};
 std::array<struct sigaction, 3> previous_actions{};
 
+// Unlinks the files, then removes the folders. A helper still running may create a file in a
+// folder between the two (rmdir then fails with ENOTEMPTY): unlink and try again, for at most
+// about a second, after which a folder holding files nobody named is left as it is.
+void remove_temporaries() {
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    bool folder_left = false;
+    for (std::size_t i = 0; i < slots; ++i)
+      if (occupied[i] == file_slot) ::unlink(in_flight[i].data());
+    for (std::size_t i = 0; i < slots; ++i)
+      if (occupied[i] == folder_slot && ::rmdir(in_flight[i].data()) != 0 && errno == ENOTEMPTY) folder_left = true;
+    if (!folder_left) return;
+    const struct timespec pause {0, 1'000'000};  // 1 ms: let the helper finish creating its file
+    ::nanosleep(&pause, nullptr);
+  }
+}
+
 // Removes the temporaries, then hands the signal to whoever handled it before (or to the
 // default action, which ends the process).
 extern "C" void remove_temporaries_and_die(int signal_number) {
-  for (std::size_t i = 0; i < slots; ++i)
-    if (occupied[i]) ::unlink(in_flight[i].data());
+  const int saved_errno = errno;  // a previous handler that returns must find errno as it was
+  remove_temporaries();
   for (std::size_t k = 0; k < cleanup_signals.size(); ++k)
     if (cleanup_signals[k] == signal_number) sigaction(signal_number, &previous_actions[k], nullptr);
   std::raise(signal_number);
+  errno = saved_errno;
 }
 
 // (Re)installs the handler when someone else's has replaced it (a test framework does per test).
@@ -47,7 +68,7 @@ void install_cleanup() {
   }
 }
 
-void remember(const std::filesystem::path& temporary) {
+void remember(const std::filesystem::path& temporary, SlotKind kind = file_slot) {
   install_cleanup();
   const std::string text = temporary.string();
   if (text.size() >= path_bytes) return;  // too long to remember; still removed on failure
@@ -55,7 +76,7 @@ void remember(const std::filesystem::path& temporary) {
     if (!occupied[i]) {
       std::memcpy(in_flight[i].data(), text.c_str(), text.size() + 1);
       std::atomic_signal_fence(std::memory_order_release);  // the path is whole before the flag says so
-      occupied[i] = 1;
+      occupied[i] = kind;
       return;
     }
 }
@@ -63,7 +84,7 @@ void remember(const std::filesystem::path& temporary) {
 void forget(const std::filesystem::path& temporary) {
   const std::string text = temporary.string();
   for (std::size_t i = 0; i < slots; ++i)
-    if (occupied[i] && text == in_flight[i].data()) occupied[i] = 0;
+    if (occupied[i] != free_slot && text == in_flight[i].data()) occupied[i] = free_slot;
 }
 
 }  // namespace
@@ -103,6 +124,32 @@ void commit_file(const std::filesystem::path& temporary, const std::filesystem::
     discard_temporary(temporary);
     throw std::runtime_error(fmt::format("cannot move {} into place: {}", path.string(), error.message()));
   }
+}
+
+ScratchFolder::ScratchFolder(const std::filesystem::path& beside) : path_(beside) {
+  path_ += fmt::format(".tmp-{}.d", ::getpid());
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);  // a leftover of an earlier process with this pid
+  remember(path_, folder_slot);
+  std::error_code error;
+  std::filesystem::create_directory(path_, error);
+  if (error) {
+    forget(path_);
+    throw std::runtime_error(fmt::format("cannot create the folder {}: {}", path_.string(), error.message()));
+  }
+}
+
+std::filesystem::path ScratchFolder::file(const std::string& name) {
+  files_.push_back(path_ / name);
+  remember(files_.back());
+  return files_.back();
+}
+
+ScratchFolder::~ScratchFolder() {
+  for (const auto& file : files_) discard_temporary(file);
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
+  forget(path_);
 }
 
 }  // namespace kit

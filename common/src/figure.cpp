@@ -319,15 +319,22 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
   result.files = {dir / data_file, dir / (figure.name + ".gp")};
 
   if (options.render) {
+    // gnuplot writes into a private folder that a signal removes: a gnuplot still running
+    // after a SIGTERM to the chapter alone then cannot leave its temporary behind.
+    ScratchFolder scratch(dir / figure.name);
     for (const auto& format : options.formats) {
       const fs::path final_path = dir / (figure.name + "." + format);
-      const fs::path temporary = temporary_sibling(final_path);
-      const fs::path log = temporary_sibling(dir / (figure.name + ".gnuplot-log"));
+      const fs::path temporary = scratch.file(figure.name + "." + format);
+      const fs::path log = scratch.file(figure.name + "." + format + ".gnuplot-log");
       {
         // gnuplot-iostream: a pipe into a batch gnuplot run from the figure's folder, so the
-        // script's relative data path works exactly as it will for a slide author.
-        Gnuplot gp(fmt::format("cd {} && gnuplot 2>{}", shell_quoted(dir.string()), shell_quoted(log.string())));
-        gp << "fmt = " << quoted(format) << "; out = " << quoted(temporary.filename().string()) << "\n"
+        // script's relative data path works exactly as it will for a slide author. Its
+        // standard output is discarded: were the output file not creatable, gnuplot would
+        // draw onto it instead.
+        Gnuplot gp(fmt::format("cd {} && gnuplot >/dev/null 2>{}", shell_quoted(dir.string()),
+                               shell_quoted(log.string())));
+        gp << "fmt = " << quoted(format) << "; out = "
+           << quoted((scratch.path().filename() / temporary.filename()).string()) << "\n"
            << "load " << quoted(figure.name + ".gp") << "\n";
       }  // the destructor waits for gnuplot to finish
       const std::string messages = read_file(log);

@@ -48,3 +48,59 @@ TEST_CASE("a process killed by SIGTERM while a file is half-written leaves no te
   CHECK(WTERMSIG(status) == SIGTERM);
   CHECK(kit::test::files_under(dir.path()).empty());
 }
+
+namespace {
+bool folder_is_empty(const std::filesystem::path& folder) {
+  return std::filesystem::directory_iterator(folder) == std::filesystem::directory_iterator();
+}
+}  // namespace
+
+TEST_CASE("a scratch folder holds a helper's files until they are committed, and goes away after") {
+  kit::test::TempDir dir("scratch");
+  const auto final_path = dir.path() / "figure.pdf";
+  {
+    kit::ScratchFolder scratch(dir.path() / "figure");
+    CHECK(scratch.path().parent_path() == dir.path());
+    CHECK(scratch.path().filename().string().find(".tmp-") != std::string::npos);
+    const auto output = scratch.file("figure.pdf"), log = scratch.file("figure.log");
+    CHECK(output.parent_path() == scratch.path());
+    std::ofstream(output) << "a figure";
+    std::ofstream(log) << "a helper's messages";
+    kit::commit_file(output, final_path);
+  }
+  REQUIRE(kit::test::files_under(dir.path()).size() == 1);
+  CHECK(std::filesystem::exists(final_path));
+  CHECK(std::distance(std::filesystem::directory_iterator(dir.path()), std::filesystem::directory_iterator()) == 1);
+}
+
+TEST_CASE("a helper that outlives a SIGTERM to its parent finds no scratch folder to write into") {
+  kit::test::TempDir dir("scratch-signal");
+  int helper_done[2];
+  REQUIRE(::pipe(helper_done) == 0);
+  const pid_t child = ::fork();
+  if (child == 0) {  // the chapter: it starts a helper that writes late, then is terminated
+    std::signal(SIGTERM, SIG_DFL);
+    kit::ScratchFolder scratch(dir.path() / "figure");
+    const auto output = scratch.file("figure.pdf");
+    std::ofstream(scratch.file("figure.log")) << "the helper's log, already open";
+    if (::fork() == 0) {  // the helper: not signalled; it writes after its parent has died
+      ::close(helper_done[0]);
+      ::usleep(300'000);
+      const bool wrote = static_cast<bool>(std::ofstream(output) << "a figure too late");
+      const char verdict = wrote ? 'w' : 'n';
+      (void)!::write(helper_done[1], &verdict, 1);
+      ::_exit(0);
+    }
+    ::kill(::getpid(), SIGTERM);
+    ::_exit(0);  // not reached
+  }
+  ::close(helper_done[1]);
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  CHECK(WIFSIGNALED(status));
+  char verdict = '?';
+  REQUIRE(::read(helper_done[0], &verdict, 1) == 1);  // waits for the helper's attempt
+  ::close(helper_done[0]);
+  CHECK(verdict == 'n');
+  CHECK(folder_is_empty(dir.path()));
+}

@@ -1,7 +1,9 @@
 #pragma once
 // Files appear whole or not at all: write a temporary sibling, then rename it into place.
 #include <filesystem>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace kit {
 
@@ -19,5 +21,27 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
 
 /// Renames a finished temporary file onto its final name.
 void commit_file(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
+/// A private folder next to `beside` ("name.tmp-<pid>.d") for a helper program (gnuplot,
+/// ffmpeg) to write its output and log into. A helper can outlive the process: a SIGTERM sent
+/// to the chapter alone does not reach it. So a signal removes the folder's files, named here
+/// by `file`, and then the folder itself, repeating until the folder is gone; a helper that
+/// writes afterwards finds no folder and cannot leave a file behind. The destructor removes
+/// whatever is still inside.
+class ScratchFolder {
+ public:
+  explicit ScratchFolder(const std::filesystem::path& beside);
+  ~ScratchFolder();
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  /// The path of `name` inside the folder, removed by a signal from now on.
+  std::filesystem::path file(const std::string& name);
+
+ private:
+  std::filesystem::path path_;
+  std::vector<std::filesystem::path> files_;
+};
 
 }  // namespace kit
