@@ -1,7 +1,9 @@
 #include <kit/chapter_app.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -98,15 +100,28 @@ void ChapterApp::add_count(const std::string& flag, long& value, const std::stri
   auto check = [lo, hi](std::string& input) -> std::string {
     errno = 0;
     char* end = nullptr;
-    const long v = std::strtol(input.c_str(), &end, 10);
+    long v = std::strtol(input.c_str(), &end, 10);
+    const bool digits_read = end != input.c_str() && errno != ERANGE;
+    bool whole = digits_read && *end == '\0';
+    // A count written as a number ("1e9", "2.5e3") is taken when it is whole and exact in a
+    // double (below 2^53), and handed on to CLI11 in digits; hexadecimal is not.
+    if (digits_read && !whole && input.find_first_of("xX") == std::string::npos) {
+      char* real_end = nullptr;
+      const double real = std::strtod(input.c_str(), &real_end);
+      if (*real_end == '\0' && std::isfinite(real) && real == std::floor(real) && std::fabs(real) < 0x1p53) {
+        v = static_cast<long>(real);
+        whole = true;
+      }
+    }
     // CLI11 would read a leading 0 as octal (010 = 8): refused, so the value run is the one read.
-    const bool octal_looking = input.size() > 1 && input[0] == '0';
-    if (end == input.c_str() || *end != '\0' || errno == ERANGE || v < lo || v > hi || octal_looking)
+    const bool octal_looking = input.size() > 1 && input[0] == '0' && std::isdigit(static_cast<unsigned char>(input[1]));
+    if (!whole || v < lo || v > hi || octal_looking)
       return fmt::format("value {} is out of range; expected a whole number in [{}, {}]", input, lo, hi);
+    input = fmt::format("{}", v);
     return {};
   };
   app_.add_option(flag, value, fmt::format("{}; a whole number in [{}, {}]", help, lo, hi))
-      ->check(CLI::Validator(check, "", ""))
+      ->transform(CLI::Validator(check, "", ""))  // a transform: it may rewrite "1e9" in digits
       ->type_name("N");
   const std::string key = flag.substr(flag.find_first_not_of('-'));
   record_parameters_.push_back([this, key, &value] { summary_["parameters"][key] = value; });

@@ -34,7 +34,8 @@ void add_sprite_flags(ChapterApp& app, SpriteFlags& f) {
       ->capture_default_str();
   app.add_count("--width", f.width, "frame width [px]", 16, 7680);
   app.add_count("--height", f.height, "frame height [px]", 16, 4320);
-  app.add_count("--max-particles", f.max_particles, "particles alive at most (default: the scene's)", 1, 50'000'000);
+  app.add_count("--max-particles", f.max_particles, "particles alive at most (default: the scene's)", 1,
+                max_particles_bound);
 }
 
 SpriteScene load_scene_flag(const SpriteFlags& flags, const std::filesystem::path& scenes_dir) {

@@ -273,7 +273,7 @@ SpriteScene parse_sprite_scene(std::string_view text, std::string_view file_name
   scene.frames = root.integer("frames", 1, 20'000).value_or(scene.frames);
   scene.fps = root.real("fps", between(1, 1000)).value_or(scene.fps);
   scene.warmup = root.real("warmup", between(0, 600)).value_or(scene.warmup);
-  scene.max_particles = root.integer("max_particles", 1, 50'000'000).value_or(scene.max_particles);
+  scene.max_particles = root.integer("max_particles", 1, max_particles_bound).value_or(scene.max_particles);
   scene.background = colour(root, "background").value_or(scene.background);
 
   if (const auto camera = root.sub("camera")) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -189,6 +190,21 @@ TEST_CASE("chapter 5: a run too long for the machine is refused up front with it
   INFO(result.err);
   CHECK(result.exit_code == 2);
   CHECK_THAT(result.err, Catch::Contains("--frames 20000") && Catch::Contains("takes about"));
+  CHECK_FALSE(fs::exists(out.path() / "figures"));
+}
+
+TEST_CASE("chapter 5: a billion particles are refused up front with the memory they would need") {
+  kit::test::TempDir out("ch05-billion");
+  // 1e9 written as a number is a whole count; the store alone needs bytes_per_particle each.
+  const auto result = kit::test::run_process(binary, {"--max-particles", "1e9", "--frames", "1",
+                                                      "--out", (out.path() / "figures").string()});
+  INFO(result.err);
+  CHECK(result.exit_code == 2);
+  CHECK_THAT(result.err, Catch::Contains("--max-particles 1000000000") && Catch::Contains("ask for less memory"));
+  // The memory said is at least the particle store's: 1e9 × bytes_per_particle.
+  std::smatch memory;
+  REQUIRE(std::regex_search(result.err, memory, std::regex(R"(and ([0-9.]+) GB, over the limit)")));
+  CHECK(std::stod(memory[1]) * 1e9 >= 1e9 * double(kit::Particles::bytes_per_particle));
   CHECK_FALSE(fs::exists(out.path() / "figures"));
 }
 

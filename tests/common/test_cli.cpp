@@ -62,6 +62,21 @@ TEST_CASE("whole-number flags are checked the same way") {
   CHECK_THAT(outcome.err, Catch::Contains("--count") && Catch::Contains("[1, 100]"));
 }
 
+TEST_CASE("a whole number may be written as a number (1e2), never as a fraction, in hexadecimal or octal") {
+  const auto written_as_number = run_app({"--count", "1e2", "--quiet", "--no-plot"});
+  CHECK(written_as_number.code == 0);
+  CHECK(written_as_number.summary["parameters"]["count"].get<long>() == 100);
+  CHECK(run_app({"--count", "2.5e1", "--quiet", "--no-plot"}).summary["parameters"]["count"].get<long>() == 25);
+  for (const std::string refused : {"2.5", "1e3", "0x10", "010", "1e", "inf", "nan", "12abc"}) {
+    const auto outcome = run_app({"--count", refused});
+    INFO(refused << ": " << outcome.err);
+    CHECK(outcome.code == 2);
+    CHECK_FALSE(outcome.body_ran);
+    CHECK_THAT(outcome.err, Catch::Contains("--count") && Catch::Contains("value " + refused) &&
+                                Catch::Contains("[1, 100]"));
+  }
+}
+
 TEST_CASE("an unknown flag or format is a usage error") {
   CHECK(run_app({"--bogus"}).code == 2);
   CHECK_THAT(run_app({"--bogus"}).err, Catch::Contains("--bogus"));

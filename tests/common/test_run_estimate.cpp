@@ -16,6 +16,7 @@ TEST_CASE("an estimate is its steps times the cost of a step; memory and time fo
   CHECK(kit::describe_bytes(2.1e9) == "2.1 GB");
   CHECK(kit::describe_bytes(3e13) == "30 TB");
   CHECK(kit::describe_bytes(1.6e16) == "16 PB");
+  CHECK(kit::describe_bytes(1.2e11) == "120 GB");  // no exponent: a person reads it at a glance
   CHECK_FALSE(kit::over_limits(e));
   CHECK(kit::over_limits({1e12, 1e-9, 0}));     // 1000 s: over 10 min
   CHECK(kit::over_limits({1e3, 1e-9, 5e9}));    // 5 GB: over 4 GB
@@ -84,4 +85,11 @@ TEST_CASE("announcing: stored always, printed when long or large, refused with t
                              Catch::Contains("over the limit of 10 min and 4 GB"));
   }
   CHECK_FALSE(summary.contains("huge"));  // refused before anything is recorded
+
+  // Over the memory only: the advice is about memory, not about steps.
+  CHECK_THROWS_WITH(kit::announce_run(report, "big", "The store", {1, 1e-9, 1.2e11}, "--max-particles 1e9"),
+                    Catch::Contains("about 1 steps: under a second and 120 GB") &&
+                        Catch::Contains("choose values that ask for less memory"));
+  CHECK_THROWS_WITH(kit::announce_run(report, "both", "The sweep", {2.3e12, 1e-9, 1.2e11}, "--t-end 1 s"),
+                    Catch::Contains("ask for fewer steps and less memory"));
 }

@@ -80,6 +80,11 @@ struct Camera {
   double fov_deg = 45;       ///< vertical field of view [deg]
 };
 
+/// The largest max_particles a flag or scene file may ask for: a bound on the count, beyond the
+/// memory of any machine, not on this machine. The run estimate (sprite_run.hpp) refuses, up
+/// front and with the memory it would need, a store this machine cannot hold.
+constexpr long max_particles_bound = 1'000'000'000'000;
+
 struct SpriteScene {
   std::string name;
   std::string file;           ///< where it was read from

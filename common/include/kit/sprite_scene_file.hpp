@@ -12,7 +12,7 @@
 //   frames         integer in [1, 20000]                  default 120
 //   fps            number in [1, 1000]                    default 30
 //   warmup         number in [0, 600] [s], simulated before frame 0 (not rendered)   default 0
-//   max_particles  integer in [1, 50000000]               default 100000
+//   max_particles  integer in [1, 1e12]                   default 100000
 //   background     [r, g, b], each in [0, 1]              linear RGB
 //   [camera]       position, target: [x, y, z] [m], target != position; fov_deg in [1, 170]
 //                  (vertical field of view [deg])
