@@ -91,11 +91,17 @@ Figure cloth_stability_figure(const std::vector<StabilityCase>& rows, const std:
   for (const auto& row : rows)
     if (std::find(layouts.begin(), layouts.end(), row.layout) == layouts.end()) layouts.push_back(row.layout);
   std::string tics = "set xtics (";
-  for (std::size_t k = 0; k < layouts.size(); ++k)
-    tics += fmt::format("{}\"{}\" {}", k ? ", " : "", layouts[k], k);
+  for (std::size_t k = 0; k < layouts.size(); ++k) {
+    // A long layout name ("all three, μ = …") breaks after its comma, so that at a slide's
+    // width it does not run into its neighbour's.
+    std::string label = layouts[k];
+    if (const auto comma = label.find(", "); comma != std::string::npos) label.replace(comma, 2, ",\\n");
+    tics += fmt::format("{}\"{}\" {}", k ? ", " : "", label, k);
+  }
   p.commands.push_back(tics + ")");
   p.commands.push_back(fmt::format("set xrange [-0.5:{}]", double(layouts.size()) - 0.5));
   p.commands.push_back("set offsets 0, 0, graph 0.06, graph 0.06");  // no point on the frame
+  p.commands.push_back("set key samplen 4 spacing 1.4");  // room in the legend for the large open circles
   for (ClothIntegrator integrator : all_cloth_integrators) {
     std::vector<double> x, measured, xp, predicted;
     // Each integrator's points sit a little apart within a layout's column so none hides another.
