@@ -28,8 +28,16 @@ from chapter_binaries import chapter_binaries
 ENDINGS = {".png": b"IEND\xaeB`\x82", ".gif": b";", ".dat": b"\n", ".gp": b"\n"}
 
 
+def entries(folder):
+    """Every file and folder under `folder`. A folder may vanish while it is listed (a chapter
+    removes its scratch folders): os.walk skips what it can no longer read, rglob would raise."""
+    for root, folders, files in os.walk(folder):
+        for name in folders + files:
+            yield pathlib.Path(root) / name
+
+
 def temporaries(folder):
-    return sorted(str(p) for p in folder.rglob("*") if ".tmp-" in p.name)
+    return sorted(str(p) for p in entries(folder) if ".tmp-" in p.name)
 
 
 def torn(path):
@@ -76,7 +84,7 @@ def interrupt(binary, out, tmp, sig, whole_group, at_temporary=None, at_seconds=
 
     def waiting():
         if at_name:
-            return not any(at_name in str(p) for p in out.rglob("*"))
+            return not any(at_name in str(p) for p in entries(out))
         return len(seen) < at_temporary if at_temporary else time.monotonic() - started < at_seconds
     while process.poll() is None and waiting():
         seen.update(temporaries(out))
