@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 
@@ -80,7 +81,13 @@ RunOutcome run_ffmpeg(const std::filesystem::path& ffmpeg, const std::vector<std
 // named by -f; the file is renamed onto `path` only when ffmpeg succeeded.
 RunOutcome encode_one(const std::filesystem::path& ffmpeg, std::vector<std::string> arguments, const char* muxer,
                       const std::filesystem::path& path) {
-  ScratchFolder scratch(path);
+  std::optional<ScratchFolder> scratch_holder;
+  try {
+    scratch_holder.emplace(path);
+  } catch (const std::runtime_error& error) {  // an output folder that cannot be written: a note, as for ffmpeg
+    return {false, error.what()};
+  }
+  ScratchFolder& scratch = *scratch_holder;
   const auto log = scratch.file(path.filename().string() + ".ffmpeg-log");
   const auto temporary = scratch.file(path.filename().string());
   arguments.insert(arguments.end(), {"-f", muxer, temporary.string()});

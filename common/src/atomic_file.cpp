@@ -24,19 +24,22 @@ enum SlotKind : std::sig_atomic_t { free_slot = 0, file_slot = 1, folder_slot = 
 std::array<std::array<char, path_bytes>, slots> in_flight{};
 std::array<volatile std::sig_atomic_t, slots> occupied{};
 
-constexpr std::array<int, 3> cleanup_signals{SIGTERM, SIGINT, SIGHUP};
-std::array<struct sigaction, 3> previous_actions{};
+// SIGPIPE too: a helper that exits before reading its whole script kills the chapter with it.
+constexpr std::array<int, 4> cleanup_signals{SIGTERM, SIGINT, SIGHUP, SIGPIPE};
+std::array<struct sigaction, 4> previous_actions{};
 
 // Unlinks the files, then removes the folders. A helper still running may create a file in a
 // folder between the two (rmdir then fails with ENOTEMPTY): unlink and try again, for at most
-// about a second, after which a folder holding files nobody named is left as it is.
+// about a second, after which a folder holding files nobody named is left as it is. (POSIX lets
+// rmdir report a folder that is not empty as EEXIST too.)
 void remove_temporaries() {
   for (int attempt = 0; attempt < 1000; ++attempt) {
     bool folder_left = false;
     for (std::size_t i = 0; i < slots; ++i)
       if (occupied[i] == file_slot) ::unlink(in_flight[i].data());
     for (std::size_t i = 0; i < slots; ++i)
-      if (occupied[i] == folder_slot && ::rmdir(in_flight[i].data()) != 0 && errno == ENOTEMPTY) folder_left = true;
+      if (occupied[i] == folder_slot && ::rmdir(in_flight[i].data()) != 0 && (errno == ENOTEMPTY || errno == EEXIST))
+        folder_left = true;
     if (!folder_left) return;
     const struct timespec pause {0, 1'000'000};  // 1 ms: let the helper finish creating its file
     ::nanosleep(&pause, nullptr);

@@ -1,9 +1,7 @@
 #include <kit/chapter_app.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
-#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -11,6 +9,8 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
+
+#include <kit/whole_number.hpp>
 
 namespace kit {
 
@@ -98,26 +98,19 @@ void ChapterApp::add_real(const std::string& flag, double& value, const std::str
 
 void ChapterApp::add_count(const std::string& flag, long& value, const std::string& help, long lo, long hi) {
   auto check = [lo, hi](std::string& input) -> std::string {
-    errno = 0;
-    char* end = nullptr;
-    long v = std::strtol(input.c_str(), &end, 10);
-    const bool digits_read = end != input.c_str() && errno != ERANGE;
-    bool whole = digits_read && *end == '\0';
-    // A count written as a number ("1e9", "2.5e3") is taken when it is whole and exact in a
-    // double (below 2^53), and handed on to CLI11 in digits; hexadecimal is not.
-    if (digits_read && !whole && input.find_first_of("xX") == std::string::npos) {
-      char* real_end = nullptr;
-      const double real = std::strtod(input.c_str(), &real_end);
-      if (*real_end == '\0' && std::isfinite(real) && real == std::floor(real) && std::fabs(real) < 0x1p53) {
-        v = static_cast<long>(real);
-        whole = true;
-      }
+    using Kind = WholeNumberText::Kind;
+    const WholeNumberText read = read_whole_number(input);
+    const std::string expected = fmt::format("expected a whole number in [{}, {}]", lo, hi);
+    switch (read.kind) {
+      case Kind::not_a_number: return fmt::format("value {} is not a number; {}", input, expected);
+      case Kind::not_whole: return fmt::format("value {} is not a whole number; {}", input, expected);
+      case Kind::leading_zero:
+        return fmt::format("value {} starts with 0, which some tools read as octal; {}", input, expected);
+      case Kind::too_large: return fmt::format("value {} is out of range; {}", input, expected);
+      case Kind::whole: break;
     }
-    // CLI11 would read a leading 0 as octal (010 = 8): refused, so the value run is the one read.
-    const bool octal_looking = input.size() > 1 && input[0] == '0' && std::isdigit(static_cast<unsigned char>(input[1]));
-    if (!whole || v < lo || v > hi || octal_looking)
-      return fmt::format("value {} is out of range; expected a whole number in [{}, {}]", input, lo, hi);
-    input = fmt::format("{}", v);
+    if (read.value < lo || read.value > hi) return fmt::format("value {} is out of range; {}", input, expected);
+    input = fmt::format("{}", read.value);  // CLI11 then reads plain digits: "1e9" arrives as 1000000000
     return {};
   };
   app_.add_option(flag, value, fmt::format("{}; a whole number in [{}, {}]", help, lo, hi))

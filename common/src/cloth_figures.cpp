@@ -95,8 +95,8 @@ Figure cloth_stability_figure(const std::vector<StabilityCase>& rows, const std:
     // A long layout name ("all three, μ = …") breaks after its comma, so that at a slide's
     // width it does not run into its neighbour's.
     std::string label = layouts[k];
-    if (const auto comma = label.find(", "); comma != std::string::npos) label.replace(comma, 2, ",\\n");
-    tics += fmt::format("{}\"{}\" {}", k ? ", " : "", label, k);
+    if (const auto comma = label.find(", "); comma != std::string::npos) label.replace(comma, 2, ",\n");
+    tics += fmt::format("{}{} {}", k ? ", " : "", gnuplot_string(label), k);
   }
   p.commands.push_back(tics + ")");
   p.commands.push_back(fmt::format("set xrange [-0.5:{}]", double(layouts.size()) - 0.5));

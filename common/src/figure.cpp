@@ -92,20 +92,6 @@ std::string shell_quoted(const std::string& text) {
   return out + "'";
 }
 
-// A gnuplot double-quoted string literal; a line break becomes gnuplot's \n.
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 // `text` on two lines when it is longer than `width` characters: broken at the ", ", ": " or
 // " (" nearest its middle, else at the space nearest it. A long axis label otherwise runs off a short panel, and a long title
 // off a narrow figure, once the figure is drawn at the size of its slide.
@@ -234,9 +220,9 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
                     static_cast<int>(figure.width_in * 110), static_cast<int>(figure.height_in * 110))
      << "if (fmt ne \"show\") { set output out }\n"
      << "set encoding utf8\n"
-     << "data = " << quoted(data_file) << "\n";
+     << "data = " << gnuplot_string(data_file) << "\n";
   const bool multi = figure.panels.size() > 1;
-  if (multi) gp << "set multiplot title " << quoted(wrapped(figure.title, 80)) << " font sprintf(\",%g\", font_pt)\n";
+  if (multi) gp << "set multiplot title " << gnuplot_string(wrapped(figure.title, 80)) << " font sprintf(\",%g\", font_pt)\n";
   int index = 0;
   const int columns = std::max(1, figure.columns);
   const int rows = static_cast<int>((figure.panels.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
@@ -252,9 +238,9 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
       gp << fmt::format("set origin {},{}\nset size {},{}\n", place[0], place[1], place[2], place[3]);
     }
     const std::string title = multi ? panel.title : (panel.title.empty() ? figure.title : figure.title + "\n" + panel.title);
-    gp << "set title " << quoted(wrapped(title, 72)) << "\n"
-       << "set xlabel " << quoted(wrapped(panel.xlabel, 80)) << "\n"
-       << "set ylabel " << quoted(wrapped(panel.ylabel, rows > 1 ? 24 : 34)) << "\n"
+    gp << "set title " << gnuplot_string(wrapped(title, 72)) << "\n"
+       << "set xlabel " << gnuplot_string(wrapped(panel.xlabel, 80)) << "\n"
+       << "set ylabel " << gnuplot_string(wrapped(panel.ylabel, rows > 1 ? 24 : 34)) << "\n"
        << "set grid lc rgb '#dddddd'\n"
        << "set key " << panel.key << " box opaque samplen 2 spacing 1.2\n";  // room for sub- and superscripts
     if (figure.left_edge) gp << fmt::format("set lmargin at screen {}\n", *figure.left_edge);
@@ -278,12 +264,12 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
       }
       clauses.push_back(fmt::format("data index {} using {}:{} with {}{} {}", block, x, y, series.with,
                                     series.style.empty() ? "" : " " + series.style,
-                                    series.title.empty() ? "notitle" : "title " + quoted(series.title)));
+                                    series.title.empty() ? "notitle" : "title " + gnuplot_string(series.title)));
     }
     if (!empty.empty()) {
       std::string names;
       for (const auto& name : empty) names += (names.empty() ? "" : ", ") + name;
-      gp << "set label " << quoted("nothing to draw" + std::string(panel.logy || panel.logx ? " on a log scale" : "") +
+      gp << "set label " << gnuplot_string("nothing to draw" + std::string(panel.logy || panel.logx ? " on a log scale" : "") +
                                    ": " + names) << " at graph 0.02, graph 0.04 left front font \",9\"\n";
     }
     if (clauses.empty()) {  // nothing at all: the axes, the label, and an invisible line
@@ -296,6 +282,19 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
   }
   if (multi) gp << "unset multiplot\n";
   return gp.str();
+}
+
+std::string gnuplot_string(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    if (c == '"' || c == '\\' || c == '`') out += '\\';
+    out += c;
+  }
+  return out + "\"";
 }
 
 std::optional<std::string> window_unavailable() {
@@ -333,9 +332,9 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
         // draw onto it instead.
         Gnuplot gp(fmt::format("cd {} && gnuplot >/dev/null 2>{}", shell_quoted(dir.string()),
                                shell_quoted(log.string())));
-        gp << "fmt = " << quoted(format) << "; out = "
-           << quoted((scratch.path().filename() / temporary.filename()).string()) << "\n"
-           << "load " << quoted(figure.name + ".gp") << "\n";
+        gp << "fmt = " << gnuplot_string(format) << "; out = "
+           << gnuplot_string((scratch.path().filename() / temporary.filename()).string()) << "\n"
+           << "load " << gnuplot_string(figure.name + ".gp") << "\n";
       }  // the destructor waits for gnuplot to finish
       const std::string messages = read_file(log);
       discard_temporary(log);
@@ -354,7 +353,7 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
       result.notes.push_back(fmt::format("--show: {}; the figure files are written", *why));
     } else {
       Gnuplot gp(fmt::format("cd {} && gnuplot -persist", shell_quoted(dir.string())));
-      gp << "fmt = \"show\"\nload " << quoted(figure.name + ".gp") << "\n";
+      gp << "fmt = \"show\"\nload " << gnuplot_string(figure.name + ".gp") << "\n";
     }
   }
   return result;

@@ -11,20 +11,20 @@
 
 namespace kit {
 
-namespace {
-// Two significant digits without an exponent: "2.1", "30", "120".
-std::string amount(double value) {
-  return value < 10 ? fmt::format("{:.2g}", value) : fmt::format("{:.0f}", value);
-}
-}  // namespace
-
 std::string describe_bytes(double bytes) {
   if (!(bytes >= 0) || !std::isfinite(bytes)) return "an unknown amount of memory";
   if (bytes < 1e6) return "under 1 MB";
-  if (bytes < 1e9) return fmt::format("{:.0f} MB", bytes / 1e6);
-  if (bytes < 1e12) return amount(bytes / 1e9) + " GB";
-  if (bytes < 1e15) return amount(bytes / 1e12) + " TB";
-  return amount(bytes / 1e15) + " PB";
+  // No exponent: two significant digits below 10 ("2.1 GB"), whole numbers above ("125 GB"). The
+  // unit is chosen after rounding, so that 999.7 GB reads "1 TB", not "1000 GB".
+  const char* units[] = {"MB", "GB", "TB", "PB"};
+  double value = bytes / 1e6;
+  int unit = 0;
+  for (;;) {
+    const std::string text = value < 9.95 ? fmt::format("{:.2g}", value) : fmt::format("{:.0f}", value);
+    if (std::stod(text) < 1000 || unit == 3) return text + " " + units[unit];
+    value /= 1000;
+    ++unit;
+  }
 }
 
 std::string describe(const RunEstimate& e) {

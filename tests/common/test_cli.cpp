@@ -67,7 +67,8 @@ TEST_CASE("a whole number may be written as a number (1e2), never as a fraction,
   CHECK(written_as_number.code == 0);
   CHECK(written_as_number.summary["parameters"]["count"].get<long>() == 100);
   CHECK(run_app({"--count", "2.5e1", "--quiet", "--no-plot"}).summary["parameters"]["count"].get<long>() == 25);
-  for (const std::string refused : {"2.5", "1e3", "0x10", "010", "1e", "inf", "nan", "12abc"}) {
+  for (const std::string refused : {"2.5", "1e3", "0x10", "010", "1e", "inf", "nan", "12abc", "2.0000000000000001",
+                                    "1e-400", " 5", "99999999999999999999"}) {
     const auto outcome = run_app({"--count", refused});
     INFO(refused << ": " << outcome.err);
     CHECK(outcome.code == 2);

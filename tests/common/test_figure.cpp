@@ -125,6 +125,26 @@ TEST_CASE("a relative figure folder and one named with shell syntax are written 
   std::filesystem::current_path(previous);
 }
 
+TEST_CASE("text with backquotes reaches gnuplot as text: no command in a title, label or legend runs") {
+  kit::test::TempDir dir("figure-backquotes");
+  const auto marker = [&](const char* name) { return (dir.path() / name).string(); };
+  // gnuplot runs `command` even inside double quotes: a scene named so would run it.
+  kit::Figure fig("scene", std::string("scene `touch ") + marker("title") + "`");
+  auto& p = fig.panel(std::string("x `touch ") + marker("xlabel") + "` [m]", "y [m]", "panel");
+  p.line(std::string("series `touch ") + marker("legend") + "`", {0, 1}, {0, 1});
+  p.commands.push_back("set xtics (" + kit::gnuplot_string(std::string("`touch ") + marker("tic") + "`") + " 0.5)");
+  kit::FigureOptions options;
+  options.dir = dir.path() / "out";
+  options.formats = {"png"};
+  REQUIRE_NOTHROW(kit::write_figure(fig, options));
+  CHECK(std::filesystem::exists(dir.path() / "out" / "scene.png"));
+  for (const char* name : {"title", "xlabel", "legend", "tic"}) {
+    INFO(name);
+    CHECK_FALSE(std::filesystem::exists(dir.path() / name));
+  }
+  CHECK(kit::gnuplot_string("a`b\"c\\d\ne") == "\"a\\`b\\\"c\\\\d\\ne\"");
+}
+
 TEST_CASE("a log panel with nothing positive to draw still renders, and names what it could not draw") {
   kit::test::TempDir dir("figure-log");
   kit::Figure fig("zeros", "Errors that are exactly zero");

@@ -17,6 +17,9 @@ TEST_CASE("an estimate is its steps times the cost of a step; memory and time fo
   CHECK(kit::describe_bytes(3e13) == "30 TB");
   CHECK(kit::describe_bytes(1.6e16) == "16 PB");
   CHECK(kit::describe_bytes(1.2e11) == "120 GB");  // no exponent: a person reads it at a glance
+  CHECK(kit::describe_bytes(999.7e9) == "1 TB");   // the unit follows the rounding
+  CHECK(kit::describe_bytes(999.4e6) == "999 MB");
+  CHECK(kit::describe_bytes(9.96e9) == "10 GB");
   CHECK_FALSE(kit::over_limits(e));
   CHECK(kit::over_limits({1e12, 1e-9, 0}));     // 1000 s: over 10 min
   CHECK(kit::over_limits({1e3, 1e-9, 5e9}));    // 5 GB: over 4 GB

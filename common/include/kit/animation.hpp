@@ -20,8 +20,9 @@ std::filesystem::path find_ffmpeg();
 /// from 0 or 1 on; ffmpeg's image2 input) at `fps` frames per second into `mp4` (H.264, yuv420p,
 /// padded to even width and height as yuv420p needs) and `gif` (one palette made for the whole
 /// clip). ffmpeg runs directly (no shell), stdin from /dev/null, its messages to a log read back
-/// into the note on failure. Each video is written to a temporary sibling and renamed into place;
-/// a failed encode leaves no file, and its note gives ffmpeg's exit status and first error line.
+/// into the note on failure. Each video is written into a scratch folder beside it (ScratchFolder,
+/// atomic_file.hpp) and renamed into place; a failed encode, or a folder that cannot be written,
+/// leaves no file, and its note says why (ffmpeg's exit status and first error line).
 /// Without ffmpeg on PATH nothing is written and the note says so.
 /// Throws std::invalid_argument unless fps > 0.
 AnimationResult encode_animation(const std::filesystem::path& frame_pattern, double fps,

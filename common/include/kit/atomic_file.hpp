@@ -9,8 +9,9 @@ namespace kit {
 
 /// A temporary name next to `path` ("name.ext.tmp-<pid>"), on the same file system, so the
 /// final rename is atomic. The name is remembered until commit_file or discard_temporary: a
-/// SIGTERM, SIGINT or SIGHUP (a timeout, Ctrl-C, a closed terminal) removes every remembered
-/// temporary before the process dies, so an interrupted run leaves no half-written file.
+/// SIGTERM, SIGINT, SIGHUP or SIGPIPE (a timeout, Ctrl-C, a closed terminal, a helper or reader
+/// gone) removes every remembered temporary before the process dies, so an interrupted run
+/// leaves no half-written file.
 std::filesystem::path temporary_sibling(const std::filesystem::path& path);
 /// Removes a temporary that will not be committed (ignoring a missing file) and forgets it.
 void discard_temporary(const std::filesystem::path& temporary);

@@ -101,6 +101,11 @@ bool drawable(const Series& s, bool logx, bool logy);
 /// window terminal …"), or nothing when it can.
 std::optional<std::string> window_unavailable();
 
+/// `text` as a gnuplot double-quoted string literal: quotes, backslashes and backquotes escaped,
+/// a line break written \n. Backquotes matter: gnuplot runs a backquoted shell command even
+/// inside double quotes, and titles carry scene names from files.
+std::string gnuplot_string(const std::string& text);
+
 /// The gnuplot script for `figure` reading `data_file` (exposed for tests).
 std::string gnuplot_script(const Figure& figure, const std::string& data_file);
 
