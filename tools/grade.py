@@ -7,7 +7,9 @@ For each folder, in its own grade tree OUT/NAME/:
   2. configure and build the graded programs against that copy, inside the sandbox
      (grading/sandbox.py), one program per exercise, `ninja -k 0` so a file that does not compile
      costs only the exercises written in it; they link the kit's library as `./kit` built it once
-     for the batch (--common-library), so a tree compiles only its graded programs;
+     for the batch (--common-library), and the Catch2 main and precompiled header (Catch2, Eigen)
+     that OUT/.grading-shared/ builds once for the batch from the kit's code alone, read-only in
+     every sandbox: a tree compiles only its graded programs;
   3. run each graded program inside the sandbox, with a memory limit, a timeout (wall clock and
      CPU seconds) and no right to start a process, and read the evidence it writes on a channel
      the grader opened (grading/evidence.py);
@@ -88,12 +90,12 @@ def died_of(code, sig):
     return code in (-sig, 128 + sig)
 
 
-def verdict(exercise, binary, run, expected, errors, findings):
+def verdict(exercise, built, run, expected, errors, findings):
     """(status, message) for one exercise."""
     ident = exercise["id"]
     if target(ident) in errors:  # checked first: a failed build must never run an older binary
         return "compile error", errors[target(ident)]
-    if not binary.exists():
+    if not built:
         return "not run", "the test program was not built (see build.log)"
     code, output, cases, end, odd = run
     # An exit status of 128 + n reads as signal n only when the run never reached its end
@@ -138,7 +140,60 @@ def shared_library(library, tree):
     return str(copy)
 
 
-def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, library):
+SHARED_TREE = ".grading-shared"  # the batch's Catch2 main and precompiled header, in OUT/ beside the grade trees
+
+
+def configure(sandbox, tree, build, impl, common, shared):
+    """Configures a grade tree (or the batch's shared tree, whose flags must be the graded
+    programs' own for GCC to use its precompiled header) unless its cache already holds these settings, inside the
+    sandbox. Returns (configured, cmake's output)."""
+    cache = build / "CMakeCache.txt"
+    cached = cache.read_text(encoding="utf-8", errors="replace") if cache.exists() else ""
+    settings = [f"KIT_IMPL:STRING={impl}", f"KIT_COMMON_LIBRARY:FILEPATH={common}", f"KIT_GRADING_SHARED:PATH={shared}"]
+    if all(f"{line}\n" in cached for line in settings) and (build / "build.ninja").exists():
+        return True, ""
+    code, log = run_limited(sandbox.wrap(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja",
+                                          "-DCMAKE_BUILD_TYPE=Release", GRADED_OPTIMISATION, "-DKIT_GRADING_ONLY=ON",
+                                          *[f"-D{line}" for line in settings]], tree, True, BUILD_LIMITS), 600)
+    return code == 0, log
+
+
+def batch_shared(out, sandbox, library):
+    """Builds the graded programs' Catch2 main and precompiled header (tests/support/) once for
+    the batch, from the kit's code alone and before any student's code is compiled; every grade
+    tree then reads them, read-only. Returns the build folder to pass as KIT_GRADING_SHARED, or ""
+    when they could not be built (each tree then builds its own: slower, the grades the same)."""
+    tree = out / SHARED_TREE
+    tree.mkdir(parents=True, exist_ok=True)
+    build = tree / "build"
+    common = shared_library(library, tree)
+    configured, log = configure(sandbox, tree, build, ROOT / "exercises", common, "")
+    code = None
+    if configured:
+        code, more = run_limited(sandbox.wrap(["cmake", "--build", str(build), "--target", "kit_grading_shared"],
+                                              tree, True, BUILD_LIMITS), 600)
+        log += more
+    (tree / "build.log").write_text(log, encoding="utf-8")
+    if code != 0:
+        print(f"grade: the batch's shared Catch2 main and precompiled header could not be built (see "
+              f"{tree / 'build.log'}); each tree builds its own", file=sys.stderr)
+        return ""
+    sandbox.share(build)
+    return str(build)
+
+
+def out_of_date(sandbox, tree, build):
+    """The graded programs the build left out of date (a compile error, a build cut short): ninja's
+    dry run names what it would still link. Their binaries, from an earlier grade of the tree, must
+    not run; the others are current, and a regrade relinks nothing it need not."""
+    code, plan = run_limited(sandbox.wrap(["cmake", "--build", str(build), "--", "-n", "-k", "0"], tree, True,
+                                          BUILD_LIMITS), 600)
+    if code != 0:
+        return None  # unknown: no program of this build runs
+    return set(re.findall(r"Linking CXX executable tests/(grade_ex\w+)", plan))
+
+
+def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, library, shared):
     tree = out / label
     tree.mkdir(parents=True, exist_ok=True)
     src, build = tree / "src", tree / "build"
@@ -150,29 +205,17 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, libr
     for name in copied:
         findings += static_check.check((src / name).read_text(encoding="utf-8", errors="replace"), name,
                                        kit_headers, set(allowed))
-    cache = build / "CMakeCache.txt"
-    cached = cache.read_text(encoding="utf-8", errors="replace") if cache.exists() else ""
-    configured = f"KIT_IMPL:STRING={src}\n" in cached and f"KIT_COMMON_LIBRARY:FILEPATH={common}\n" in cached \
-        and (build / "build.ninja").exists()
-    log = ""
-    if not configured:
-        code, log = run_limited(sandbox.wrap(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja",
-                                              "-DCMAKE_BUILD_TYPE=Release", GRADED_OPTIMISATION,
-                                              f"-DKIT_IMPL={src}", "-DKIT_GRADING_ONLY=ON",
-                                              f"-DKIT_COMMON_LIBRARY={common}"],
-                                             tree, True, BUILD_LIMITS), 600)
+    configured, log = configure(sandbox, tree, build, src, common, shared)
+    if log:
         (tree / "configure.log").write_text(log, encoding="utf-8")
-        configured = code == 0
     rows = []
-    errors = {}
+    errors, stale = {}, None
     if configured:
-        for stale in (build / "tests").glob("grade_ex*"):  # a program that fails to build must not run old
-            if stale.is_file():
-                stale.unlink()
         _, log = run_limited(sandbox.wrap(["cmake", "--build", str(build), "-j", str(jobs), "--", "-k", "0"],
                                           tree, True, BUILD_LIMITS), 3600)
         (tree / "build.log").write_text(log, encoding="utf-8")
         errors = build_log.compile_errors(log, allowed)
+        stale = out_of_date(sandbox, tree, build)
     evidence_dir = tree / "evidence"
     evidence_dir.mkdir(exist_ok=True)
     for exercise in points["exercises"]:
@@ -182,7 +225,8 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, libr
             status, message = "error", "the folder could not be configured (see configure.log)"
         else:
             run = (None, "", {}, None, [])
-            if binary.exists():
+            built = binary.exists() and stale is not None and binary.name not in stale
+            if built:
                 channel = evidence_dir / f"ex{ident}.txt"
                 fd = evidence_fd_for(channel)
                 command = sandbox.wrap([str(binary), "--reporter", "compact", "--rng-seed", SEED], tree, False,
@@ -190,7 +234,7 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, libr
                 code, output = run_with_evidence(command, channel, fd, timeout)
                 (evidence_dir / f"ex{ident}.out").write_text(output, encoding="utf-8")
                 run = (code, output, *evidence.read(channel))
-            status, message = verdict(exercise, binary, run, expected.get(ident, {}), errors, findings)
+            status, message = verdict(exercise, built, run, expected.get(ident, {}), errors, findings)
         if exercise["file"] in missing and status != "pass":
             message = f"{exercise['file']} is missing from the folder; " + message
         rows.append({"id": ident, "chapter": exercise["chapter"], "title": exercise["title"], "file": exercise["file"],
@@ -206,7 +250,8 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, libr
 
 def labels_for(folders):
     """A report name per folder: its base name, with a short hash of its path when two clash."""
-    names = [(f.name or "submission") if f.name not in ("class.csv", "class.md") else f"{f.name}-folder" for f in folders]
+    names = [(f.name or "submission") if f.name not in ("class.csv", "class.md", SHARED_TREE) else f"{f.name}-folder"
+             for f in folders]
     return [n if names.count(n) == 1 else f"{n}-{hashlib.sha1(str(f).encode()).hexdigest()[:6]}"
             for n, f in zip(names, folders)]
 
@@ -228,11 +273,12 @@ def batch(args):
         return 2
     out.mkdir(parents=True, exist_ok=True)
     paths = []
+    shared = batch_shared(out, sandbox, args.common_library)
     for folder, label in zip(folders, labels_for(folders)):
         print(f"grading {folder}", file=sys.stderr, flush=True)
         try:
             paths.append(grade_one(folder, label, out, points, expected, sandbox, args.jobs, args.timeout,
-                                   args.common_library))
+                                   args.common_library, shared))
         except (OSError, ValueError, UnicodeError) as error:  # one folder's failure never stops the batch
             print(f"grade: {folder}: could not be graded: {error}", file=sys.stderr)
             paths.append(out / label / "grade.json")  # absent or stale: the summary names it

@@ -10,7 +10,8 @@ The six submissions, generated from the solution markers:
   adversary     solved, but six files attack the grader:
     amplification.hpp   a static initialiser writes outside its tree: a marker file, the kit's
                         points.json and a new file in tests/grading/, a line appended to every
-                        classmate's file, and the classmates' grade.json
+                        classmate's file, the classmates' grade.json, and the batch's shared
+                        Catch2 main and precompiled header
     rk4.hpp             std::_Exit(0) in a static initialiser (ctest would say "Passed")
     symplectic_euler.hpp  #define CHECK(...) to silence the checks, with a wrong method
     spring_system.hpp   #include of the kit's own solutions/ file, by absolute path
@@ -94,7 +95,12 @@ def main(argv):
 
     classmates = [str(classroom / n / "explicit_euler.hpp") for n in names[:-1]]
     reports = [str(out / n / "grade.json") for n in names[:-1]]
-    targets = [str(outside / "pwned"), str(ROOT / "tests/grading/points.json"), str(ROOT / "tests/grading/extra.cpp")]
+    # The batch's shared build, which every classmate's tree compiles and links with.
+    shared = out / ".grading-shared" / "build"
+    shared_files = {shared / "tests/libkit_catch_main.a": b"!<arch>",
+                    shared / "tests/CMakeFiles/kit_grading_pch.dir/cmake_pch.hxx.gch": b"gpch"}
+    targets = [str(outside / "pwned"), str(ROOT / "tests/grading/points.json"), str(ROOT / "tests/grading/extra.cpp"),
+               *map(str, shared_files)]
     attack = ("inline const bool kit_attack = [] {\n"
               + "".join(f'  {{ std::ofstream f("{t}"); f << "{{}}"; }}\n' for t in targets + reports)
               + "".join(f'  {{ std::ofstream f("{c}", std::ios::app); f << "// tampered\\n"; }}\n' for c in classmates)
@@ -195,6 +201,9 @@ def main(argv):
         changed.append("tests/grading/extra.cpp was created")
     if any(outside.iterdir()):
         changed.append(f"{outside} has new files")
+    for path, magic in shared_files.items():
+        if not path.is_file() or not path.read_bytes().startswith(magic):
+            changed.append(f"{path} (the batch's shared build) is missing or was overwritten")
     problems += [f"changed outside the grade trees: {c}" for c in changed]
 
     for p in problems:

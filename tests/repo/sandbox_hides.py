@@ -7,7 +7,8 @@ and checks from inside: only the system folders, the kit and the tree are there 
 /root, /var, /etc/passwd or /etc/shadow, nothing else next to the kit); the kit's solutions/
 and .git are empty, another submission is invisible, the kit and the system are read-only, no
 capability is left to undo a mount, the environment holds no secret, there is no network, a
-test has nowhere to write, and only the tree (and a private /tmp) is writable during a build.
+test has nowhere to write, and only the tree (and a private /tmp) is writable during a build;
+the batch's shared build (Catch2 main, precompiled header) is readable and never writable.
 Then, under a graded test's limits: a fork bomb in a static initialiser is killed at its first
 fork and a busy loop at its CPU seconds; a compiler still builds a program under the build's
 limits, and that program runs under a test's.
@@ -159,8 +160,21 @@ def main(argv):
         problems.append("the sandbox's /tmp is the machine's")
     if (ROOT / "pwned").exists() or (classmate / "rk4.hpp").read_text() != "a classmate's work\n":
         problems.append("something outside the tree changed")
+    # The batch's shared build (the Catch2 main and precompiled header every tree uses): readable,
+    # never writable, not even by a build, whose student could otherwise plant code in the others'.
+    shared = work / "out" / ".grading-shared" / "build"
+    shared.mkdir(parents=True)
+    (shared / "libkit_catch_main.a").write_text("the batch's main\n")
+    sandbox.share(shared)
+    _, got = inside(f"cat {shared / 'libkit_catch_main.a'}", writable=True)
+    if got != "the batch's main":
+        problems.append("the batch's shared build is not readable")
+    _, got = inside(f"(echo x >> {shared / 'libkit_catch_main.a'} || touch {shared / 'planted'}) 2>/dev/null "
+                    "&& echo written || echo refused", writable=True)
+    if got != "refused" or (shared / "libkit_catch_main.a").read_text() != "the batch's main\n":
+        problems.append("a build can write into the batch's shared build")
     problems += check_limits(sandbox, tree, inside)
-    print(f"{len(checks) + 6} checks; {len(problems)} problems")
+    print(f"{len(checks) + 8} checks; {len(problems)} problems")
     return 1 if problems else 0
 
 

@@ -76,6 +76,7 @@ class Sandbox:
     def __init__(self, kit_root, hidden, enabled=True):
         self.kit_root = pathlib.Path(kit_root)
         self.hidden = [pathlib.Path(p) for p in hidden]
+        self.shared = []  # folders every sandboxed command may read (the batch's precompiled header)
         self.enabled = enabled
         if enabled:
             self._probe()
@@ -117,6 +118,10 @@ class Sandbox:
                 args += ["--ro-bind", "/dev/null", str(path)]  # a .git file (worktree), say
         return args
 
+    def share(self, folder):
+        """Makes `folder` readable, never writable, by every command wrapped from now on."""
+        self.shared.append(pathlib.Path(folder))
+
     def wrap(self, command, tree, writable, limits, env=None):
         """`command` confined to `tree` (a grade tree) under `limits`, with `env` as the only
         variables it gets besides PATH, HOME, TMPDIR and LANG."""
@@ -132,5 +137,6 @@ class Sandbox:
                  "--unshare-all", "--die-with-parent", "--new-session", "--cap-drop", "ALL", "--clearenv",
                  "--setenv", "PATH", "/usr/local/bin:/usr/bin:/bin", "--setenv", "HOME", "/tmp",
                  "--setenv", "TMPDIR", "/tmp", "--setenv", "LANG", "C.UTF-8", "--setenv", "CCACHE_DISABLE", "1"]
-                + extra + self._kit() + [*bind, str(tree), str(tree), "--remount-ro", "/", "--chdir", str(tree), "--"]
+                + extra + self._kit() + [word for f in self.shared for word in ("--ro-bind", str(f), str(f))]
+                + [*bind, str(tree), str(tree), "--remount-ro", "/", "--chdir", str(tree), "--"]
                 + confine + command)
