@@ -161,36 +161,31 @@ def configure(sandbox, tree, build, impl, common, shared):
 def batch_shared(out, sandbox, library):
     """Builds the graded programs' Catch2 main and precompiled header (tests/support/) once for
     the batch, from the kit's code alone and before any student's code is compiled; every grade
-    tree then reads them, read-only. Returns the build folder to pass as KIT_GRADING_SHARED, or ""
-    when they could not be built (each tree then builds its own: slower, the grades the same)."""
+    tree then reads them, read-only (only in the sandbox: without it, a test could rewrite them).
+    Returns the build folder to pass as KIT_GRADING_SHARED, or "" without a sandbox or when they
+    could not be built (each tree then builds its own: slower, and the grades are the same)."""
+    if not sandbox.enabled:
+        return ""  # unconfined, a graded test could rewrite it for every classmate after it
     tree = out / SHARED_TREE
-    tree.mkdir(parents=True, exist_ok=True)
-    build = tree / "build"
-    common = shared_library(library, tree)
-    configured, log = configure(sandbox, tree, build, ROOT / "exercises", common, "")
     code = None
-    if configured:
-        code, more = run_limited(sandbox.wrap(["cmake", "--build", str(build), "--target", "kit_grading_shared"],
-                                              tree, True, BUILD_LIMITS), 600)
-        log += more
-    (tree / "build.log").write_text(log, encoding="utf-8")
+    try:
+        tree.mkdir(parents=True, exist_ok=True)
+        build = tree / "build"
+        common = shared_library(library, tree)
+        configured, log = configure(sandbox, tree, build, ROOT / "exercises", common, "")
+        if configured:
+            code, more = run_limited(sandbox.wrap(["cmake", "--build", str(build), "--target", "kit_grading_shared"],
+                                                  tree, True, BUILD_LIMITS), 600)
+            log += more
+        (tree / "build.log").write_text(log, encoding="utf-8")
+    except OSError as error:
+        print(f"grade: {tree}: {error}", file=sys.stderr)
     if code != 0:
         print(f"grade: the batch's shared Catch2 main and precompiled header could not be built (see "
               f"{tree / 'build.log'}); each tree builds its own", file=sys.stderr)
         return ""
     sandbox.share(build)
     return str(build)
-
-
-def out_of_date(sandbox, tree, build):
-    """The graded programs the build left out of date (a compile error, a build cut short): ninja's
-    dry run names what it would still link. Their binaries, from an earlier grade of the tree, must
-    not run; the others are current, and a regrade relinks nothing it need not."""
-    code, plan = run_limited(sandbox.wrap(["cmake", "--build", str(build), "--", "-n", "-k", "0"], tree, True,
-                                          BUILD_LIMITS), 600)
-    if code != 0:
-        return None  # unknown: no program of this build runs
-    return set(re.findall(r"Linking CXX executable tests/(grade_ex\w+)", plan))
 
 
 def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, library, shared):
@@ -209,13 +204,17 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, libr
     if log:
         (tree / "configure.log").write_text(log, encoding="utf-8")
     rows = []
-    errors, stale = {}, None
+    errors = {}
     if configured:
+        # A program that fails to build, for whatever reason (an error, a log cut short, a build
+        # stopped by its time limit), must never run an older binary: every one is relinked.
+        for old in (build / "tests").glob("grade_ex*"):
+            if old.is_file():
+                old.unlink()
         _, log = run_limited(sandbox.wrap(["cmake", "--build", str(build), "-j", str(jobs), "--", "-k", "0"],
                                           tree, True, BUILD_LIMITS), 3600)
         (tree / "build.log").write_text(log, encoding="utf-8")
         errors = build_log.compile_errors(log, allowed)
-        stale = out_of_date(sandbox, tree, build)
     evidence_dir = tree / "evidence"
     evidence_dir.mkdir(exist_ok=True)
     for exercise in points["exercises"]:
@@ -225,7 +224,7 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, libr
             status, message = "error", "the folder could not be configured (see configure.log)"
         else:
             run = (None, "", {}, None, [])
-            built = binary.exists() and stale is not None and binary.name not in stale
+            built = binary.exists()
             if built:
                 channel = evidence_dir / f"ex{ident}.txt"
                 fd = evidence_fd_for(channel)

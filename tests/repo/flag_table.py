@@ -64,7 +64,7 @@ def cases_for(table):
     cases += [lows, highs]
     pairs = [[(a["flag"], x), (b["flag"], y)] for a, b in itertools.combinations(table, 2)
              for x in ends(a) for y in ends(b)]
-    cases += random.Random(20261122).sample(pairs, min(len(pairs), 24))
+    cases += random.Random(20261122).sample(pairs, min(len(pairs), 8))  # each a whole run at two extremes
     return cases
 
 

@@ -98,7 +98,7 @@ def main(argv):
     # The batch's shared build, which every classmate's tree compiles and links with.
     shared = out / ".grading-shared" / "build"
     shared_files = {shared / "tests/libkit_catch_main.a": b"!<arch>",
-                    shared / "tests/CMakeFiles/kit_grading_pch.dir/cmake_pch.hxx.gch": b"gpch"}
+                    shared / "tests/CMakeFiles/kit_test_pch.dir/cmake_pch.hxx.gch": b"gpch"}
     targets = [str(outside / "pwned"), str(ROOT / "tests/grading/points.json"), str(ROOT / "tests/grading/extra.cpp"),
                *map(str, shared_files)]
     attack = ("inline const bool kit_attack = [] {\n"

@@ -1,0 +1,1 @@
+// The translation unit that precompiles test_pch.hpp (tests/CMakeLists.txt): it defines nothing.
