@@ -90,12 +90,12 @@ def died_of(code, sig):
     return code in (-sig, 128 + sig)
 
 
-def verdict(exercise, built, run, expected, errors, findings):
+def verdict(exercise, binary, run, expected, errors, findings):
     """(status, message) for one exercise."""
     ident = exercise["id"]
     if target(ident) in errors:  # checked first: a failed build must never run an older binary
         return "compile error", errors[target(ident)]
-    if not built:
+    if not binary.exists():
         return "not run", "the test program was not built (see build.log)"
     code, output, cases, end, odd = run
     # An exit status of 128 + n reads as signal n only when the run never reached its end
@@ -144,9 +144,9 @@ SHARED_TREE = ".grading-shared"  # the batch's Catch2 main and precompiled heade
 
 
 def configure(sandbox, tree, build, impl, common, shared):
-    """Configures a grade tree (or the batch's shared tree, whose flags must be the graded
-    programs' own for GCC to use its precompiled header) unless its cache already holds these settings, inside the
-    sandbox. Returns (configured, cmake's output)."""
+    """Configures a grade tree, inside the sandbox, unless its cache already holds these settings
+    (the batch's shared tree too: its flags must be the graded programs' own for GCC to use its
+    precompiled header). Returns (configured, cmake's output)."""
     cache = build / "CMakeCache.txt"
     cached = cache.read_text(encoding="utf-8", errors="replace") if cache.exists() else ""
     settings = [f"KIT_IMPL:STRING={impl}", f"KIT_COMMON_LIBRARY:FILEPATH={common}", f"KIT_GRADING_SHARED:PATH={shared}"]
@@ -224,8 +224,7 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, libr
             status, message = "error", "the folder could not be configured (see configure.log)"
         else:
             run = (None, "", {}, None, [])
-            built = binary.exists()
-            if built:
+            if binary.exists():
                 channel = evidence_dir / f"ex{ident}.txt"
                 fd = evidence_fd_for(channel)
                 command = sandbox.wrap([str(binary), "--reporter", "compact", "--rng-seed", SEED], tree, False,
@@ -233,7 +232,7 @@ def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, libr
                 code, output = run_with_evidence(command, channel, fd, timeout)
                 (evidence_dir / f"ex{ident}.out").write_text(output, encoding="utf-8")
                 run = (code, output, *evidence.read(channel))
-            status, message = verdict(exercise, built, run, expected.get(ident, {}), errors, findings)
+            status, message = verdict(exercise, binary, run, expected.get(ident, {}), errors, findings)
         if exercise["file"] in missing and status != "pass":
             message = f"{exercise['file']} is missing from the folder; " + message
         rows.append({"id": ident, "chapter": exercise["chapter"], "title": exercise["title"], "file": exercise["file"],
