@@ -6,15 +6,17 @@ extra work. Each is graded with `./kit grade`, the instructor's own command:
 
   - exercises/ as shipped scores 0 on every item, each with the placeholder's message;
   - solutions/ scores full marks;
-  - for every exercise N.k: exercises/ with only N.k's regions solved scores exactly N.k's
-    points: N.k's test passes with every other exercise a placeholder, so it calls no other
-    exercise's code (a placeholder throws), and every other test fails, so none of them passes
-    on N.k's code. The mirror sweep (solutions/ with only N.k stubbed) is not run: beyond this
-    one, it could only catch a test that passes on its own exercise or, as well, on all the
-    others together, or one that a third exercise's solution breaks; it took 22 grades;
-  - for every file F a student edits:
-      solutions/ with F made uncompilable scores the total minus the points of F's exercises,
-      and each of those reports a compile error naming F.
+  - exercises/ with a set S of exercises solved scores exactly the points of S: the tests of S
+    pass and every other test fails. The sets are chosen so that for any two exercises i and j,
+    one tree solves i and leaves j a placeholder (each exercise gets a distinct set of half the
+    trees, and no such set holds another: a Sperner family). In that tree, i's test passes
+    with j a placeholder (which throws), so it never calls j's code, and j's test fails, so it
+    does not pass on i's code. Seven trees cover up to 35 exercises; solving one exercise a tree
+    checked the same pairs with one tree an exercise;
+  - solutions/ with a set of student files made uncompilable scores the total minus the points
+    of the exercises written in them, and each of those reports a compile error naming its own
+    file. The sets come from the same design over the files: for any two files F and G, one tree
+    breaks F and not G, so G's exercises never include F, and F's error is reported as F's.
 
 All trees are written in turn into one staging folder that is graded in one build tree. Only the
 files that differ from the previous tree are rewritten, so ninja recompiles only the graded
@@ -22,7 +24,9 @@ programs that include them: the kit's library is built once, and a run stays wit
 
 Usage: grades_isolate_exercises.py WORK_DIR [--only ID,ID]
 """
+import itertools
 import json
+import math
 import pathlib
 import subprocess
 import sys
@@ -45,6 +49,25 @@ def write_tree(stage, files):
         target = stage / name
         if not target.exists() or target.read_text(encoding="utf-8") != text:
             target.write_text(text, encoding="utf-8")
+
+
+def separating_sets(items):
+    """Subsets of `items` such that for any two items a and b, one subset holds a and not b.
+
+    Each item gets a distinct half-size set of tree numbers; no half-size set contains another,
+    so a's set has a tree that b's lacks. Returns one subset of `items` per tree."""
+    trees = 2
+    while math.comb(trees, trees // 2) < len(items):
+        trees += 1
+    codes = itertools.combinations(range(trees), trees // 2)
+    members = [set() for _ in range(trees)]
+    for item, code in zip(items, codes):
+        for tree in code:
+            members[tree].add(item)
+    sets = [frozenset(m) for m in members if m]
+    unseparated = [(a, b) for a in items for b in items if a != b and not any(a in s and b not in s for s in sets)]
+    assert not unseparated, f"no tree separates {unseparated[:3]}"
+    return sets
 
 
 def grade(stage, out):
@@ -86,28 +109,30 @@ def main(argv):
         return check
 
     selected = [i for i in region_file if only is None or i in only]
-    # 1. From the shipped skeleton: nothing solved, then one exercise solved at a time.
+    # 1. From the shipped skeleton: nothing solved, then the separating sets solved.
     def placeholder(row):
         if row["status"] != "fail" or "not implemented" not in row["message"]:
             return f"ex {row['id']}: expected the placeholder's failure, got {row['status']}: {row['message'][:160]}"
         return None
     expect("exercises/ as shipped", exercises.expected_tree(solutions), 0, placeholder)
-    for ident in selected:
-        expect(f"exercises/ with only ex {ident} solved", exercises.expected_tree(solutions, {ident}),
-               table[ident]["points"], passes_exactly({ident}))
+    for solved in separating_sets(selected):
+        expect(f"exercises/ with ex {', '.join(sorted(solved))} solved", exercises.expected_tree(solutions, solved),
+               sum(table[i]["points"] for i in solved), passes_exactly(solved))
     # 2. The reference: everything solved.
     expect("solutions/", exercises.expected_tree(solutions, every), total, passes_exactly(every))
-    # 3. One file that does not compile costs only the exercises written in it.
-    for name in sorted({region_file[i] for i in selected}):
-        in_file = {i for i, f in region_file.items() if f == name}
+    # 3. Files that do not compile cost only the exercises written in them.
+    for names in separating_sets(sorted({region_file[i] for i in selected})):
+        in_file = {i: f for i, f in region_file.items() if f in names}
         files = exercises.expected_tree(solutions, every)
-        files[name] = BROKEN + files[name]
+        for name in names:
+            files[name] = BROKEN + files[name]
 
-        def compile_error_in_file(row, in_file=in_file, name=name):
-            if row["id"] in in_file and (row["status"] != "compile error" or name not in row["message"]):
-                return f"ex {row['id']}: expected a compile error naming {name}, got {row['status']}: {row['message'][:160]}"
-            return passes_exactly(every - in_file)(row)
-        expect(f"solutions/ with {name} uncompilable", files,
+        def compile_error_in_file(row, in_file=in_file):
+            if row["id"] in in_file and (row["status"] != "compile error" or in_file[row["id"]] not in row["message"]):
+                return (f"ex {row['id']}: expected a compile error naming {in_file[row['id']]}, got {row['status']}: "
+                        f"{row['message'][:160]}")
+            return passes_exactly(every - in_file.keys())(row)
+        expect(f"solutions/ with {', '.join(sorted(names))} uncompilable", files,
                total - sum(table[i]["points"] for i in in_file), compile_error_in_file)
 
     for p in problems:
