@@ -85,6 +85,14 @@ bool drawable(const Series& s, bool logx, bool logy) {
 
 namespace {
 
+// `text` as comment lines ("# …" each): a title's line break must not end the comment, or the
+// rest of the title becomes a gnuplot command (or data).
+std::string comment_line(const std::string& text) {
+  std::string out = "# ";
+  for (char c : text) out += c == '\n' ? std::string("\n# ") : std::string(1, c);
+  return out + "\n";
+}
+
 // A POSIX shell single-quoted word: nothing inside is expanded ($(...), backticks, $VAR).
 std::string shell_quoted(const std::string& text) {
   std::string out = "'";
@@ -126,7 +134,7 @@ std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", 
 
 std::string data_text(const Figure& figure) {
   std::ostringstream out;
-  out << "# " << figure.title << "\n# One block per series (gnuplot 'index'); columns: x y\n"
+  out << comment_line(figure.title) << "# One block per series (gnuplot 'index'); columns: x y\n"
       << "# Series longer than " << max_plotted_points << " points keep the extremes of each of "
       << max_plotted_points / 2 << " slices (what a figure can show); NaN marks an undefined value.\n";
   int index = 0;
@@ -202,7 +210,7 @@ void pin_pdf_creation_date(const std::filesystem::path& pdf) {
 
 std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
   std::ostringstream gp;
-  gp << "# " << figure.title << "\n"
+  gp << comment_line(figure.title)
      << "# Draws " << figure.name << " from " << data_file << ". Restyle freely, then redraw from this folder:\n"
      << "#   gnuplot -e \"fmt='pdf'\" " << figure.name << ".gp     (fmt: pdf, png, svg; or 'show' for a window)\n"
      << "if (!exists(\"fmt\")) fmt = \"png\"\n"

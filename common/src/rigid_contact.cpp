@@ -2,18 +2,70 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace kit {
 namespace {
 
-// The world's inverse inertia R I⁻¹ Rᵀ applied to a vector [1/(kg·m²)] times its units.
-Vec3 apply_world_inverse_inertia(const RigidShape& shape, const Mat3& R, const Vec3& v) {
-  return R * (shape.inverse_inertia * (R.transpose() * v));
-}
+// One corner in contact: its arm from the centre of mass [m], the normal speed it arrived with
+// [m/s], and its accumulated impulses [N·s].
+struct CornerContact {
+  Vec3 arm;
+  double arrival = 0;
+  double normal = 0;
+  Vec3 friction = Vec3::Zero();
+};
 
-// K(d) = 1/M + d · ((I⁻¹ (r × d)) × r): the velocity change along d at r per unit impulse along d.
-double inverse_effective_mass(const RigidShape& shape, const Mat3& R, const Vec3& r, const Vec3& d) {
-  return 1.0 / shape.mass + d.dot(apply_world_inverse_inertia(shape, R, r.cross(d)).cross(r));
+// The body's velocities as the impulses change them: v [m/s] and ω [rad/s], both world.
+class BodyVelocity {
+ public:
+  BodyVelocity(const RigidShape& shape, const RigidState& state)
+      : shape_(shape), R_(state.R), P_(state.P), L_(state.L) {}
+  Vec3 at(const Vec3& arm) const { return P_ / shape_.mass + omega().cross(arm); }
+  void apply(const Vec3& arm, const Vec3& impulse) {
+    P_ += impulse;
+    L_ += arm.cross(impulse);
+  }
+  // K(d): the velocity change along d at `arm` per unit impulse along d [1/kg].
+  double inverse_effective_mass(const Vec3& arm, const Vec3& d) const {
+    return 1.0 / shape_.mass + d.dot(world_inverse_inertia(arm.cross(d)).cross(arm));
+  }
+  void store(RigidState& state) const {
+    state.P = P_;
+    state.L = L_;
+  }
+
+ private:
+  Vec3 world_inverse_inertia(const Vec3& v) const { return R_ * (shape_.inverse_inertia * (R_.transpose() * v)); }
+  Vec3 omega() const { return world_inverse_inertia(L_); }
+  const RigidShape& shape_;
+  Mat3 R_;
+  Vec3 P_, L_;
+};
+
+// One sweep over the corners; returns the largest change of an impulse [N·s].
+double sweep(std::vector<CornerContact>& corners, BodyVelocity& body, double restitution, double friction) {
+  const Vec3 up = Vec3::UnitY();
+  double largest = 0;
+  for (CornerContact& c : corners) {
+    const double target = c.arrival < 0 ? -restitution * c.arrival : 0.0;
+    const double speed = body.at(c.arm).dot(up);
+    const double normal = std::max(0.0, c.normal + (target - speed) / body.inverse_effective_mass(c.arm, up));
+    body.apply(c.arm, (normal - c.normal) * up);
+    largest = std::max(largest, std::abs(normal - c.normal));
+    c.normal = normal;
+    // Friction: cancel the sliding velocity, within Coulomb's disc of radius μ λ_i.
+    const Vec3 velocity = body.at(c.arm);
+    const Vec3 sliding = velocity - velocity.dot(up) * up;
+    Vec3 wanted = c.friction;
+    if (sliding.norm() > 0) wanted -= sliding / body.inverse_effective_mass(c.arm, sliding.normalized());
+    const double bound = friction * c.normal;
+    if (wanted.norm() > bound) wanted *= bound / wanted.norm();
+    body.apply(c.arm, wanted - c.friction);
+    largest = std::max(largest, (wanted - c.friction).norm());
+    c.friction = wanted;
+  }
+  return largest;
 }
 
 }  // namespace
@@ -26,42 +78,34 @@ double lowest_point(const RigidShape& shape, const RigidState& state) {
 
 ContactEvent resolve_ground_contact(const RigidShape& shape, RigidState& state, const GroundContact& contact) {
   ContactEvent event;
-  const Vec3 up = Vec3::UnitY();
-  const Vec3 velocity = state.P / shape.mass;
-  const Vec3 omega = apply_world_inverse_inertia(shape, state.R, state.L);
-  Vec3 arm_sum = Vec3::Zero();
-  int approaching = 0;
+  BodyVelocity body(shape, state);
+  std::vector<CornerContact> corners;
+  double deepest_arrival = 0;
   for (const Vec3& corner : shape.corners) {
     const Vec3 arm = state.R * corner;
     const double height = (state.x + arm).y();
     if (height >= 0) continue;
-    ++event.points;
-    event.depth = std::max(event.depth, -height);
-    if ((velocity + omega.cross(arm)).dot(up) < 0) arm_sum += arm, ++approaching;
+    const double arrival = body.at(arm).y();
+    if (-height > event.depth) event.depth = -height, deepest_arrival = arrival;
+    corners.push_back({arm, arrival});
   }
-  if (event.points == 0) return event;
-  bool bounced = false;
-  if (approaching > 0) {
-    const Vec3 arm = arm_sum / approaching;
-    const Vec3 relative = velocity + omega.cross(arm);
-    const double normal_speed = relative.dot(up);
-    if (normal_speed < 0) {
-      const double e = -normal_speed < contact.resting_speed ? 0.0 : contact.restitution;
-      bounced = e > 0;
-      event.normal_impulse = -(1 + e) * normal_speed / inverse_effective_mass(shape, state.R, arm, up);
-      Vec3 impulse = event.normal_impulse * up;
-      const Vec3 sliding = relative - normal_speed * up;
-      if (sliding.norm() > 0 && contact.friction > 0) {
-        const Vec3 along = sliding.normalized();
-        event.friction_impulse = std::min(contact.friction * event.normal_impulse,
-                                          sliding.norm() / inverse_effective_mass(shape, state.R, arm, along));
-        impulse -= event.friction_impulse * along;
-      }
-      state.P += impulse;
-      state.L += arm.cross(impulse);
-    }
+  event.points = int(corners.size());
+  if (corners.empty()) return event;
+  event.bounced = -deepest_arrival >= contact.resting_speed && contact.restitution > 0;
+  const double e = event.bounced ? contact.restitution : 0.0;
+  double scale = 0;  // the impulse that would stop the body's fastest corner [N·s]
+  for (const auto& c : corners) scale = std::max(scale, std::abs(c.arrival) * shape.mass);
+  do {
+    ++event.sweeps;
+  } while (sweep(corners, body, e, contact.friction) > 1e-14 * scale && event.sweeps < max_contact_sweeps);
+  body.store(state);
+  Vec3 friction = Vec3::Zero();
+  for (const auto& c : corners) {
+    event.normal_impulse += c.normal;
+    friction += c.friction;
   }
-  state.x.y() += (bounced ? 1 + contact.restitution : 1.0) * event.depth;
+  event.friction_impulse = friction.norm();
+  state.x.y() += (1 + e) * event.depth;
   return event;
 }
 

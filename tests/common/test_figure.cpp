@@ -198,3 +198,19 @@ TEST_CASE("a panel stays usable after more panels are added (the figure keeps re
   REQUIRE(figure.panels.front().series.size() == 1);
   CHECK(figure.panels.front().series.front().title == "drawn later");
 }
+
+TEST_CASE("a title on two lines stays a comment in the data and the script, and the figure draws") {
+  kit::test::TempDir dir("figure-two-lines");
+  kit::Figure fig = sample_figure();
+  fig.title = "first line\nsecond line (a command if it left the comment)";
+  kit::FigureOptions options;
+  options.dir = dir.path();
+  options.formats = {"png"};
+  REQUIRE_NOTHROW(kit::write_figure(fig, options));
+  for (const char* file : {"sample.dat", "sample.gp"}) {
+    const std::string text = slurp(dir.path() / file);
+    INFO(file);
+    CHECK(text.find("\n# second line") != std::string::npos);
+    CHECK(text.find("\nsecond line") == std::string::npos);
+  }
+}

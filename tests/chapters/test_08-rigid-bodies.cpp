@@ -1,0 +1,184 @@
+// Chapter 8 end to end: the tumbling T-handle's flips against the closed form and GSL, what each
+// integrator keeps (E, |L|, RᵀR = 1), the stable and unstable axes, the orders seen in the trade,
+// the drops, the frames and meshes, divergence and bad input.
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "process.hpp"
+
+using nlohmann::json;
+
+namespace {
+const std::string binary = KIT_CHAPTER_BINARY;
+
+json run_chapter(std::vector<std::string> args, int expected_exit = 0) {
+  kit::test::TempDir out("ch08");
+  args.insert(args.end(), {"--json", "--no-plot", "--out", out.path().string()});
+  const auto result = kit::test::run_process(binary, args);
+  INFO(result.err);
+  REQUIRE(result.exit_code == expected_exit);
+  return json::parse(result.out);
+}
+
+const json& default_run() {
+  static const json summary = run_chapter({});
+  return summary;
+}
+
+double number(const json& value) { return value.is_null() ? NAN : double(value); }
+}  // namespace
+
+TEST_CASE("chapter 8: the midpoint and RK4 flip the T-handle as GSL does, at the closed form's interval within 1e-5") {
+  const json& s = default_run();
+  const double closed_form = double(s["body"]["interval"]);
+  CHECK(closed_form == Approx(1.67598).epsilon(1e-5));  // half of 4K(k)/λ, Landau & Lifshitz §37
+  CHECK(long(s["reference"]["flips"]) == 6);
+  for (const char* name : {"midpoint", "rk4"}) {
+    INFO(name);
+    const json& r = s["integrators"][name];
+    CHECK(long(r["flips"]) == 6);
+    CHECK(std::abs(double(r["interval_error"])) < 1e-5);
+    CHECK(double(r["flip_interval"]) == Approx(closed_form).epsilon(1e-5));
+  }
+  // The first-order steps flip far too often at h = 1 ms: the motion is wrong.
+  for (const char* name : {"euler-R", "euler-R-polar", "euler-q", "exp-map"}) {
+    INFO(name);
+    CHECK(long(s["integrators"][name]["flips"]) >= 20);
+    CHECK(double(s["integrators"][name]["interval_error"]) < -0.5);
+  }
+}
+
+TEST_CASE("chapter 8: what each integrator keeps: R on SO(3), |L| exactly, the energy within its claim") {
+  const json& i = default_run()["integrators"];
+  CHECK(double(i["euler-R"]["orthonormality"]) > 0.1);  // the lecture's ODE as written leaves SO(3)
+  for (const char* name : {"euler-R-polar", "euler-q", "exp-map", "midpoint", "rk4"}) {
+    INFO(name);
+    CHECK(double(i[name]["orthonormality"]) < 1e-13);
+  }
+  // L is constant in the world without torque: the lecture's steps never change it, the midpoint
+  // keeps it by construction (R⁺ L_b⁺ = R L_b); RK4 carries L_b and drifts at O(h⁴).
+  for (const char* name : {"euler-R", "euler-R-polar", "euler-q", "exp-map", "midpoint"}) {
+    INFO(name);
+    CHECK(double(i[name]["momentum_drift"]) < 1e-14);
+  }
+  CHECK(double(i["rk4"]["momentum_drift"]) < 1e-10);
+  CHECK(double(i["midpoint"]["energy_drift"]) < 1e-13);  // a quadratic invariant the midpoint rule keeps
+  CHECK(double(i["rk4"]["energy_drift"]) < 1e-10);
+  CHECK(double(i["euler-q"]["energy_drift"]) > 0.1);
+}
+
+TEST_CASE("chapter 8: spun about its largest or smallest axis the T-handle stays; about the intermediate one it flips") {
+  const json& axes = default_run()["axes"];
+  REQUIRE(axes.size() == 3);
+  int intermediates = 0;
+  for (const json& a : axes) {
+    INFO(a.dump());
+    if (bool(a["intermediate"])) {
+      ++intermediates;
+      CHECK(long(a["flips"]) >= 5);
+      CHECK(double(a["max_deviation_deg"]) > 80);  // ω passes across the axis as it turns over
+    } else {
+      CHECK(long(a["flips"]) == 0);
+      CHECK(double(a["max_deviation_deg"]) < 1.0);  // a 1% nudge stays a 1% wobble
+    }
+  }
+  CHECK(intermediates == 1);
+}
+
+TEST_CASE("chapter 8: the midpoint and RK4 flip 6 times up to h = 30 ms; the first-order steps never get the rate") {
+  for (const json& row : default_run()["flip_sweep"]) {
+    const std::string name = row["integrator"];
+    INFO(row.dump());
+    if (name == "midpoint" || name == "rk4") {
+      CHECK(long(row["flips"]) == 6);
+      CHECK(std::abs(number(row["interval_error"])) < 2e-3);
+    } else {
+      CHECK(!(std::abs(number(row["interval_error"])) < 0.3));  // NaN (no flips, diverged) counts as wrong
+    }
+  }
+}
+
+TEST_CASE("chapter 8: the trade shows orders 4 and 2, and RK4's round-off floor") {
+  std::map<std::string, std::map<long, double>> error;
+  for (const json& row : default_run()["trade"]) error[row["integrator"]][long(row["steps"])] = number(row["error"]);
+  // Ten times the steps: RK4's error falls by about 10⁴, the midpoint's by 10² (asymptotic range).
+  CHECK(error["rk4"][1000] / error["rk4"][100] == Approx(1e-4).epsilon(0.3));
+  CHECK(error["midpoint"][10'000] / error["midpoint"][1000] == Approx(1e-2).epsilon(0.1));
+  CHECK(error["rk4"][1'000'000] > 10 * error["rk4"][3000]);  // past its best step, round-off grows
+  for (const char* name : {"euler-R-polar", "euler-q", "exp-map"}) {
+    INFO(name);
+    CHECK(error[name][1'000'000] < 0.1);  // first order: right at last, at a million steps
+    CHECK(error[name][1000] > 1.0);
+  }
+}
+
+TEST_CASE("chapter 8: a box dropped flat rises to e² of its fall, never stays in the ground, gains no energy, rests") {
+  for (const auto& [e, mu] : {std::pair{0.5, 0.3}, std::pair{0.8, 0.0}, std::pair{0.0, 1.0}}) {
+    const json s = run_chapter({"--restitution", std::to_string(e), "--friction", std::to_string(mu)});
+    for (const char* name : {"drop", "drop_tilted"}) {
+      const json& d = s[name];
+      INFO("e = " << e << ", μ = " << mu << ", " << name << ": " << d.dump());
+      CHECK(double(d["after"]) < 1e-12);     // out of the ground after every contact
+      CHECK(double(d["deepest"]) < 0.005);   // within a step: at most about h·√(2 g) = 4.4 mm
+      // A contact adds energy only through the lift out of the ground: at most M g (1 + e) × depth [J].
+      CHECK(double(d["gain"]) <= 1.0 * 9.81 * (1 + e) * double(d["deepest"]));
+      CHECK(double(d["total"]) < double(d["start_total"]));  // and never more than it lost
+      // At rest on a face after 6 s; without friction nothing stops a tilted box from turning
+      // about the vertical once it lands, so only the flat one must rest.
+      if (mu > 0 || std::string(name) == "drop") {
+        CHECK(double(d["kinetic"]) < 1e-20);  // [J]
+        CHECK(double(d["height"]) == Approx(double(d["resting"])).margin(1e-5));  // on a face, to 10 µm
+      }
+    }
+    CHECK(double(s["drop"]["rise"]) == Approx(e * e).margin(0.01));
+    CHECK(double(s["drop"]["friction"]) < 1e-9);  // a flat drop does not slide
+    if (e > 0 && mu > 0) CHECK(double(s["drop_tilted"]["friction"]) > 0.1);  // the tilted one does [N·s]
+  }
+}
+
+TEST_CASE("chapter 8: the scene run writes a PNG and an OBJ per frame, and every figure") {
+  kit::test::TempDir out("ch08-frames");
+  const auto result = kit::test::run_process(binary, {"--json", "--frames", "3", "--t-end", "2", "--format", "png",
+                                                      "--out", out.path().string()});
+  INFO(result.err);
+  REQUIRE(result.exit_code == 0);
+  const json s = json::parse(result.out);
+  for (const char* figure : {"flips", "drift", "orthonormality", "axes", "trade-timing", "drop", "drop_tilted"}) {
+    INFO(figure);
+    CHECK(s["figures"].contains(figure));
+  }
+  for (const char* stem : {"t-handle", "drop"}) {
+    INFO(stem);
+    long pngs = 0, objs = 0;
+    for (const auto& file : kit::test::files_under(out.path())) {
+      const std::string path = file.string();
+      if (path.find(std::string("/") + stem + "_frames/") != std::string::npos && file.extension() == ".png") ++pngs;
+      if (path.find(std::string("/") + stem + "_meshes/") != std::string::npos && file.extension() == ".obj") ++objs;
+    }
+    CHECK(pngs == 4);  // frames 0 … 3
+    CHECK(objs == 4);
+  }
+}
+
+TEST_CASE("chapter 8: explicit Euler on R at a large step diverges: a reported result, exit 0, or 3 when asked") {
+  const json s = run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20"});
+  REQUIRE(s.contains("divergences"));
+  CHECK(long(s["scene"]["flips"]) != 6);
+  run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20", "--fail-on-divergence"}, 3);
+}
+
+TEST_CASE("chapter 8 answers bad input with exit 2, a message naming the flag, and no file") {
+  kit::test::expect_usage_errors(
+      binary, {{{"--omega0", "1,2"}, "--omega0"}, {{"--omega0", "a,b,c"}, "--omega0"}, {{"--omega0", "0,0,0"}, "--omega0"},
+               {{"--omega0", "1e5,0,0"}, "--omega0"}, {{"--omega0", "1,2,3,"}, "--omega0"},
+               {{"--omega0", "nan,0,1"}, "--omega0"}, {{"--dt", "0"}, "--dt"}, {{"--dt", "0.2"}, "--dt"},
+               {{"--t-end", "0"}, "--t-end"}, {{"--restitution", "1.5"}, "--restitution"},
+               {{"--friction", "-1"}, "--friction"}, {{"--integrator", "verlet"}, "--integrator"},
+               {{"--body", "sphere"}, "--body"}, {{"--frames", "-1"}, "--frames"},
+               {{"--dt", "0.05", "--t-end", "0.01"}, "--dt"}, {{"--t-end", "1e5", "--dt", "1e-4"}, "--t-end"}});
+}
