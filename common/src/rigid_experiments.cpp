@@ -50,7 +50,11 @@ RotationRun run_free_rotation(const RigidKernels& kernels, RotationIntegrator in
   RigidState state = start;
   run.samples.push_back(sample_of(shape, state, 0, e0, l0));
   if (frames > 0) run.frames.push_back(state);
-  double before = run.samples.back().omega_body[axis];
+  // A flip is counted when ω along the intermediate axis reaches the other side of ±a tenth of the
+  // largest |ω| seen along it, at the time of its last zero crossing: a wobble about zero (a body
+  // that ended up spinning about another axis) is no flip.
+  double before = run.samples.back().omega_body[axis], largest = std::abs(before), crossed = 0;
+  int side = before > 0 ? 1 : before < 0 ? -1 : 0;
   ProgressCounter progress;
   for (long k = 1; k <= run.steps; ++k) {
     rotation_step(kernels, integrator, shape, state, h);
@@ -61,10 +65,14 @@ RotationRun run_free_rotation(const RigidKernels& kernels, RotationIntegrator in
       break;
     }
     const RotationSample now = sample_of(shape, state, t, e0, l0);
-    // A flip: ω along the intermediate axis changes sign, at the linear interpolation of the crossing.
     const double along = now.omega_body[axis];
-    if ((along < 0) != (before < 0) && along != before)
-      run.flip_times.push_back(t - h * along / (along - before));
+    if ((along < 0) != (before < 0) && along != before) crossed = t - h * along / (along - before);
+    largest = std::max(largest, std::abs(along));
+    if (std::abs(along) > largest / 10) {
+      const int now_side = along > 0 ? 1 : -1;
+      if (side != 0 && now_side != side) run.flip_times.push_back(crossed);
+      side = now_side;
+    }
     before = along;
     run.max_energy_drift = std::max(run.max_energy_drift, std::abs(now.energy_drift));
     run.max_momentum_drift = std::max(run.max_momentum_drift, std::abs(now.momentum_drift));

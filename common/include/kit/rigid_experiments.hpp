@@ -31,7 +31,7 @@ struct RotationRun {
   double h = 0;                    ///< [s]
   long steps = 0;
   std::vector<RotationSample> samples;  ///< evenly spaced, first and last step included
-  std::vector<double> flip_times;  ///< [s] where ω along the intermediate axis changes sign
+  std::vector<double> flip_times;  ///< [s] where ω along the intermediate axis reverses (past a tenth of its largest)
   double max_energy_drift = 0, max_momentum_drift = 0, max_orthonormality = 0;  ///< |…| over the run
   double diverged_at = -1;         ///< [s] when a value stopped being finite; −1 if never
   std::vector<RigidState> frames;  ///< evenly spaced states for pictures, when asked for
