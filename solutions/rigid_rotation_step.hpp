@@ -23,7 +23,7 @@ inline Mat3 skew(const Vec3& w) {
 /// One explicit Euler step of R' = ω* R over h [s], ω [rad/s] in the world frame: R + h ω* R.
 inline Mat3 explicit_rotation_step(const Mat3& R, const Vec3& omega, double h) {
   // BEGIN SOLUTION ex 8.1: the lecture's step, with R's rate ω* R held for the whole step
-  return R + h * R * skew(omega);
+  return R + h * skew(omega) * R;
   // END SOLUTION
 }
 

@@ -2,6 +2,8 @@
 // d/dt (x, R, P, L) = (v, ω* R, F, τ); the lecture's steps (ex 8.1 to 8.4) against the kit's on the
 // tumbling T-handle, whose spin about its intermediate axis flips (the Dzhanibekov effect); then
 // "− collisions": a box dropped on the ground.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include <kit/chapter_app.hpp>
@@ -114,7 +116,7 @@ void scene_runs(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernel
   for (const auto& [stem, shape, frames, seconds] : {std::tuple{s.shape.name, s.shape, tumble.frames, s.t_end},
                                                      std::tuple{std::string("drop"), box, drop.frames,
                                                                 kit::scene_drop_seconds}}) {
-    const double fps = double(frames.size() - 1) / seconds;
+    const double fps = double(std::max<std::size_t>(frames.size(), 2) - 1) / seconds;  // one frame: still > 0
     const auto made = kit::write_rigid_output(shape, frames, kit::rigid_camera(shape, frames, stem == "drop"),
                                               {app.options().out_dir, 640, 480, fps, stem});
     app.report().say("frames_" + stem, "{frames} frames and OBJ meshes of the {stem} run in {dir}; {movie}\n",

@@ -54,18 +54,23 @@ Vec3d cloth_sky(double elevation) {
   return mix_colours(cloth_sky_bottom, cloth_sky_top, std::clamp(elevation / 0.5, 0.0, 1.0));  // sin 30° = 0.5
 }
 
-// One loop over the pixels, with the sky and the ground inlined in it: this is the renderers'
-// most frequent work (every pixel, every frame).
 void draw_backdrop(const SpriteCamera& camera, const std::optional<double>& ground_height,
                    const ShadowTest& in_shadow, const RayForeground& in_front, DepthCanvas& canvas) {
-  for (int py = 0; py < canvas.image.height; ++py)
-    for (int px = 0; px < canvas.image.width; ++px) {
-      const Vector3 ray = to_vector3(camera.ray(px + 0.5, py + 0.5));
-      RayHit hit = backdrop_hit(camera, ray, ground_height, in_shadow);
-      if (in_front) in_front(ray, hit);
-      canvas.put(px, py, hit.colour);
-      canvas.depth_at(px, py) = float(hit.depth);
-    }
+  // Every pixel of every frame passes here. The loop is instantiated twice so that, without a
+  // foreground, no call through a std::function sits in it: measured on chapter 6's flag scene
+  // (sky only, 640 × 480), such a call, even skipped, made the whole frame take 9.5 ms, not 5.
+  auto cast_every_ray = [&](auto&& foreground) {
+    for (int py = 0; py < canvas.image.height; ++py)
+      for (int px = 0; px < canvas.image.width; ++px) {
+        const Vector3 ray = to_vector3(camera.ray(px + 0.5, py + 0.5));
+        RayHit hit = backdrop_hit(camera, ray, ground_height, in_shadow);
+        foreground(ray, hit);
+        canvas.put(px, py, hit.colour);
+        canvas.depth_at(px, py) = float(hit.depth);
+      }
+  };
+  if (in_front) cast_every_ray(in_front);
+  else cast_every_ray([](const Vector3&, RayHit&) {});
 }
 
 std::optional<ScreenVertex> screen_vertex(const SpriteCamera& camera, const Vector3& point) {

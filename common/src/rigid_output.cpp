@@ -28,9 +28,10 @@ void remove_stale_meshes(const fs::path& dir, const std::string& stem) {
 void write_rigid_obj(const fs::path& path, const RigidShape& shape, const RigidState& state) {
   const std::vector<RigidFace> faces = rigid_faces(shape, state);
   std::string text = fmt::format(
-      "# Rigid body '{}', {} box parts, {} triangles; positions in metres, world frame (y up).\n"
+      "# Rigid body '{}', {} box part{}, {} triangles; positions in metres, world frame (y up).\n"
       "# Written by the physics-for-animation kit; opens in Blender and MeshLab.\n"
-      "o {}\n", shape.name, shape.parts.size(), 2 * faces.size(), shape.name.empty() ? "body" : shape.name);
+      "o {}\n", shape.name, shape.parts.size(), shape.parts.size() == 1 ? "" : "s", 2 * faces.size(),
+      shape.name.empty() ? "body" : shape.name);
   text.reserve(text.size() + faces.size() * 4 * 140);
   // `{}` prints a double in the shortest form that reads back to the same double.
   for (std::size_t f = 0; f < faces.size(); ++f) {

@@ -1,0 +1,24 @@
+#pragma once
+// The lecture's rotation ODE as written ("Mécanique du solide"): R' = ω* R, where ω* is the
+// cross-product matrix of the angular velocity ω [rad/s] in the world frame (ERRATA 15: the
+// lecture's "*" means ω* a = ω × a for every vector a). One explicit Euler step of it,
+//   R_{k+1} = R_k + h ω* R_k,
+// leaves the rotations: RᵀR grows by h² (ω*)ᵀω* a step, so R stretches and shears (chapter 8).
+#include <kit/not_implemented.hpp>
+#include <kit/rigid_body.hpp>
+
+namespace kit {
+
+/// The cross-product matrix ω*: skew(w) * a == w.cross(a) for every a.
+inline Mat3 skew(const Vec3& w) {
+  // TODO(ex 8.1): the antisymmetric matrix whose product with a is w × a
+  throw kit::NotImplemented("ex 8.1", "rigid_rotation_step.hpp");
+}
+
+/// One explicit Euler step of R' = ω* R over h [s], ω [rad/s] in the world frame: R + h ω* R.
+inline Mat3 explicit_rotation_step(const Mat3& R, const Vec3& omega, double h) {
+  // TODO(ex 8.1): the lecture's step, with R's rate ω* R held for the whole step
+  throw kit::NotImplemented("ex 8.1", "rigid_rotation_step.hpp");
+}
+
+}  // namespace kit
