@@ -49,6 +49,11 @@ CASES = [  # (chapter, flags, expected exit code)
     ("07-cloth-implicit", ["--integrator", "newton", "--iterations", "1", "--cg-tol", "0.5", "--t-end", "0.5"], 0),
     ("07-cloth-implicit", ["--integrator", "liu", "--iterations", "1", "--dt", "1", "--t-end", "3"], 0),
     ("07-cloth-implicit", ["--resolution", "100000"], 2),
+    # Rigid bodies: the lecture's step on R diverging (frames of an exploded body), a spin of 1.7e4
+    # rad/s that overflows RK4 and stalls the midpoint's fixed point, and a run too long to make.
+    ("08-rigid-bodies", ["--integrator", "euler-R", "--dt", "0.1", "--t-end", "10", "--frames", "5"], 0),
+    ("08-rigid-bodies", ["--omega0", "1e4,1e4,1e4", "--t-end", "1", "--frames", "3"], 0),
+    ("08-rigid-bodies", ["--dt", "1e-9", "--t-end", "1000"], 2),
 ]
 
 

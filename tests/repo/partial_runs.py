@@ -5,8 +5,9 @@ results for those, and names each other part with the exercise it waits for.
 
 Three trees are built, chapters only, as `./kit --impl DIR run` builds them (on the kit's library
 built once):
-  - "first": the first exercise of every chapter solved (1.1, 2.1, 3.1, 4.1, 5.1), and R(z) (2.4)
-    without the symplectic step (2.3) it is drawn beside; the rest stubs;
+  - "first": the first exercise of every chapter solved (1.1, 2.1, 3.1, 4.1, 5.1, …), and R(z) (2.4)
+    without the symplectic step (2.3) it is drawn beside, and ω from L (8.3) with the step on R
+    (8.1) it drives; the rest stubs;
   - "rest": the opposite;
   - "none": exercises/ as shipped, nothing solved.
 Each chapter must exit 0 with figures on, skip only parts whose exercise is not solved, and
@@ -27,8 +28,8 @@ sys.path.insert(0, str(ROOT / "tools"))
 import exercises  # noqa: E402
 
 CHAPTERS = ["01-free-fall", "02-spring-stability", "03-rk2", "04-adaptive-rk", "05-sprites", "06-cloth-explicit",
-            "07-cloth-implicit"]
-FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1", "5.1", "6.1", "6.2", "7.1"}
+            "07-cloth-implicit", "08-rigid-bodies"]
+FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1", "5.1", "6.1", "6.2", "7.1", "8.1", "8.3"}
 
 
 def write_tree(path, solved):
@@ -124,6 +125,12 @@ def expectations(tree):
                 ("the system waits for ex 7.2, the runs for ex 6.3 and 7.3",
                  lambda s: "system" not in s and "stiffness" not in s and "run" not in s),
             ],
+            "08-rigid-bodies": [
+                ("the student's ω (ex 8.3) checked", lambda s: s["omega"]["error"] < 1e-14),
+                ("Euler on R (ex 8.1) runs beside the kit's; the quaternion and the exponential map wait",
+                 lambda s: set(s["integrators"]) == {"euler-R", "euler-R-polar", "midpoint", "rk4"}
+                 and s["integrators"]["euler-R"]["flips"] == 46),
+            ],
         }
     if tree == "none":
         return {
@@ -139,6 +146,9 @@ def expectations(tree):
                                    <= set(s.get("figures_waiting", [])) and not s.get("figures"))],
             "07-cloth-implicit": [("every figure waits", lambda s: {"stiffness", "damping", "trade-timing", "solver"}
                                    <= set(s.get("figures_waiting", [])) and not s.get("figures"))],
+            "08-rigid-bodies": [("the kit's midpoint and RK4 flip 6 times, the drops run",
+                                 lambda s: set(s["integrators"]) == {"midpoint", "rk4"}
+                                 and s["integrators"]["rk4"]["flips"] == 6 and s["drop"]["bounces"] > 0)],
         }
     return {
         "01-free-fall": [
@@ -172,6 +182,10 @@ def expectations(tree):
         "07-cloth-implicit": [
             ("without the Jacobian (ex 7.1) and the network (ex 6.2) nothing runs",
              lambda s: "jacobian" not in s and "system" not in s and "run" not in s),
+        ],
+        "08-rigid-bodies": [
+            ("without ω from L (ex 8.3) the lecture's four wait, even with 8.2 and 8.4 written",
+             lambda s: set(s["integrators"]) == {"midpoint", "rk4"} and "omega" not in s),
         ],
     }
 
