@@ -52,23 +52,10 @@
 #include "cloth_jacobian.hpp"
 #include "cloth_kernels.hpp"
 #include "cloth_pcg.hpp"
+#include "cpu_clock.hpp"
 
 namespace {
-// This thread's CPU time [s]. Other work on the machine's two cores takes this thread off its core
-// now and then: the wall clock counts those pauses, this clock does not (the caches it shares
-// still slow it). Every time below is read from it; the triads keep bandwidth.hpp's wall clock.
-class CpuClock {
- public:
-  double seconds() const { return now() - start_; }
-
- private:
-  static double now() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-  }
-  double start_ = now();
-};
+using kit::bench::CpuClock;  // every time below is read from it; the triads keep bandwidth.hpp's wall clock
 
 // Fastest of `samples` timings of `run` [CPU s per call], each repeating it for at least
 // `min_seconds`: kit_bench::fastest on the CPU clock.

@@ -38,22 +38,10 @@
 #include <kit/table.hpp>
 
 #include "rigid_kernels.hpp"
+#include "cpu_clock.hpp"
 
 namespace {
-// This thread's CPU time [s]: other work on the machine's two cores takes the thread off its core
-// now and then; the wall clock would count those pauses, this clock does not.
-class CpuClock {
- public:
-  double seconds() const { return now() - start_; }
-
- private:
-  static double now() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-  }
-  double start_ = now();
-};
+using kit::bench::CpuClock;  // every time below is read from it
 
 constexpr double mass = 0.5;              // [kg], the T-handle of chapter 8
 const kit::Vec3 omega0(10, 0, 0.1);       // [rad/s], body frame = world frame at t = 0

@@ -5,35 +5,17 @@
 #include <catch2/catch.hpp>
 
 #include "cases.hpp"
+#include "rigid_cases.hpp"
 #include "rigid_rotation_step.hpp"
 
 namespace {
+using kit::test::random_vector;
+using kit::test::random_rotation;
+using kit::test::random_matrix;
+using kit::test::largest_entry;
 using kit::Mat3;
 using kit::Vec3;
 
-Vec3 random_vector(std::mt19937_64& rng, double scale) {
-  const double x = kit::test::uniform(rng, -scale, scale);
-  const double y = kit::test::uniform(rng, -scale, scale);
-  const double z = kit::test::uniform(rng, -scale, scale);
-  return {x, y, z};
-}
-
-/// A rotation drawn uniformly: a normalised quaternion of four normal numbers.
-Mat3 random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal;
-  const double w = normal(rng), x = normal(rng), y = normal(rng), z = normal(rng);
-  return kit::Quat(w, x, y, z).normalized().toRotationMatrix();
-}
-
-/// Any 3×3 matrix, entries in [−2, 2]: what explicit Euler's R is once it has left the rotations.
-Mat3 random_matrix(std::mt19937_64& rng) {
-  Mat3 m;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) m(r, c) = kit::test::uniform(rng, -2, 2);
-  return m;
-}
-
-double largest_entry(const Mat3& m) { return m.cwiseAbs().maxCoeff(); }
 }  // namespace
 
 TEST_CASE("ex 8.1: skew(w) a = w × a for random w and a, and skew(w) is the antisymmetric matrix of w",

@@ -6,26 +6,16 @@
 #include <catch2/catch.hpp>
 
 #include "cases.hpp"
+#include "rigid_cases.hpp"
 #include "rigid_quaternion_step.hpp"
 
 namespace {
+using kit::test::random_vector;
+using kit::test::random_unit_quaternion;
+using kit::test::largest_entry;
 using kit::Mat3;
 using kit::Quat;
 using kit::Vec3;
-
-Vec3 random_vector(std::mt19937_64& rng, double scale) {
-  const double x = kit::test::uniform(rng, -scale, scale);
-  const double y = kit::test::uniform(rng, -scale, scale);
-  const double z = kit::test::uniform(rng, -scale, scale);
-  return {x, y, z};
-}
-
-/// A unit quaternion drawn uniformly: four normal numbers, normalised.
-Quat random_unit_quaternion(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal;
-  const double w = normal(rng), x = normal(rng), y = normal(rng), z = normal(rng);
-  return Quat(w, x, y, z).normalized();
-}
 
 /// The lecture's step written by components: (0, ω) ⊗ (w, v) = (−ω·v, w ω + ω × v), so
 /// q + h/2 (0, ω) ⊗ q = (w − h/2 ω·v, v + h/2 (w ω + ω × v)), then divided by its norm.
@@ -36,7 +26,6 @@ Quat expected_step(const Quat& q, const Vec3& omega, double h) {
   return Quat(w / norm, v.x() / norm, v.y() / norm, v.z() / norm);
 }
 
-double largest_entry(const Mat3& m) { return m.cwiseAbs().maxCoeff(); }
 double coefficient_gap(const Quat& a, const Quat& b) { return (a.coeffs() - b.coeffs()).cwiseAbs().maxCoeff(); }
 }  // namespace
 

@@ -6,9 +6,12 @@
 #include <catch2/catch.hpp>
 
 #include "cases.hpp"
+#include "rigid_cases.hpp"
 #include "rigid_exponential_map.hpp"
 
 namespace {
+using kit::test::random_rotation;
+using kit::test::largest_entry;
 using kit::Mat3;
 using kit::Vec3;
 
@@ -19,17 +22,9 @@ Vec3 random_direction(std::mt19937_64& rng) {
   return Vec3(x, y, z).normalized();
 }
 
-/// A rotation drawn uniformly: a normalised quaternion of four normal numbers.
-Mat3 random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal;
-  const double w = normal(rng), x = normal(rng), y = normal(rng), z = normal(rng);
-  return kit::Quat(w, x, y, z).normalized().toRotationMatrix();
-}
-
 /// The turn exp(θ n*) itself, from Eigen's angle-axis (not from Rodrigues written again).
 Mat3 turn(double angle, const Vec3& axis) { return Eigen::AngleAxisd(angle, axis).toRotationMatrix(); }
 
-double largest_entry(const Mat3& m) { return m.cwiseAbs().maxCoeff(); }
 double orthonormality(const Mat3& r) { return (r.transpose() * r - Mat3::Identity()).norm(); }
 }  // namespace
 

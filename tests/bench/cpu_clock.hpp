@@ -1,0 +1,22 @@
+#pragma once
+// This thread's CPU time [s], for the benchmarks. Other work on the machine's two cores takes the
+// thread off its core now and then: the wall clock counts those pauses, this clock does not (the
+// caches it shares still slow it).
+#include <ctime>
+
+namespace kit::bench {
+
+class CpuClock {
+ public:
+  double seconds() const { return now() - start_; }
+
+ private:
+  static double now() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+  }
+  double start_ = now();
+};
+
+}  // namespace kit::bench
