@@ -55,7 +55,7 @@
 #include "cpu_clock.hpp"
 
 namespace {
-using kit::bench::CpuClock;  // every time below is read from it; the triads keep bandwidth.hpp's wall clock
+using kit::bench::CpuClock, kit::bench::load_average;  // every time below is read from it; the triads keep bandwidth.hpp's wall clock
 
 // Fastest of `samples` timings of `run` [CPU s per call], each repeating it for at least
 // `min_seconds`: kit_bench::fastest on the CPU clock.
@@ -324,11 +324,6 @@ std::string strain_text(double strain) {
 }
 const char* verdict(bool met) { return met ? "met" : "NOT met"; }
 
-// The machine's load over the last minute: other work on its cores slows every timing here.
-double load_average() {
-  double load[1] = {NAN};
-  return getloadavg(load, 1) == 1 ? load[0] : NAN;
-}
 }  // namespace
 
 int main() {

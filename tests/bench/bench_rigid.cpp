@@ -41,7 +41,7 @@
 #include "cpu_clock.hpp"
 
 namespace {
-using kit::bench::CpuClock;  // every time below is read from it
+using kit::bench::CpuClock, kit::bench::load_average;  // every time below is read from it
 
 constexpr double mass = 0.5;              // [kg], the T-handle of chapter 8
 const kit::Vec3 omega0(10, 0, 0.1);       // [rad/s], body frame = world frame at t = 0
@@ -310,10 +310,6 @@ std::vector<std::string> drift_cells(const Drift& d) {
           kit::sci(d.direction, 2), kit::sci(d.frame, 2)};
 }
 
-double load_average() {
-  double load[1] = {NAN};
-  return getloadavg(load, 1) == 1 ? load[0] : NAN;
-}
 }  // namespace
 
 int main() {

@@ -1,7 +1,9 @@
 #pragma once
-// This thread's CPU time [s], for the benchmarks. Other work on the machine's two cores takes the
+// This thread's CPU time [s], and the machine's load, for the benchmarks. Other work on the machine's two cores takes the
 // thread off its core now and then: the wall clock counts those pauses, this clock does not (the
 // caches it shares still slow it).
+#include <cmath>
+#include <cstdlib>
 #include <ctime>
 
 namespace kit::bench {
@@ -18,5 +20,12 @@ class CpuClock {
   }
   double start_ = now();
 };
+
+/// The machine's load over the last minute (NaN when unknown): other work on its cores slows
+/// every timing, so a benchmark prints it first.
+inline double load_average() {
+  double load[1] = {NAN};
+  return getloadavg(load, 1) == 1 ? load[0] : NAN;
+}
 
 }  // namespace kit::bench
