@@ -68,6 +68,8 @@ void add_rigid_flags(ChapterApp& app, RigidFlags& f) {
   app.add_real("--restitution", f.restitution, "the ground's coefficient of restitution e", between(0, 1));
   app.add_real("--friction", f.friction, "the ground's Coulomb friction coefficient μ", between(0, 10));
   app.add_count("--frames", f.frames, "pictures and meshes of each scene run (0: none)", 0, 20'000);
+  app.add_count("--trade-steps", f.trade_steps, "the most steps of an integrator in the cost-of-accuracy runs",
+                100, 100'000'000);
 }
 
 RigidSetup rigid_setup(const RigidFlags& flags) {
@@ -80,6 +82,10 @@ RigidSetup rigid_setup(const RigidFlags& flags) {
   setup.dt = flags.dt;
   setup.t_end = flags.t_end;
   setup.frames = flags.frames;
+  for (long n = 100; n <= flags.trade_steps; n *= 10) {  // 1 and 3 per decade
+    setup.trade_steps.push_back(n);
+    if (3 * n <= flags.trade_steps) setup.trade_steps.push_back(3 * n);
+  }
   if (flags.dt > flags.t_end)
     throw UsageError(fmt::format("--dt {} s is longer than --t-end {} s: the run would take no step", flags.dt,
                                  flags.t_end));
@@ -89,10 +95,13 @@ RigidSetup rigid_setup(const RigidFlags& flags) {
 RunEstimate estimate_rigid_runs(const RigidSetup& setup) {
   // Per simulated second of --t-end: six integrators at --dt (the side-by-side runs), six at each
   // of 1e-4, 1e-3, 1e-2 and 3e-2 s (the sweep), the scene's run, and GSL sampled every 1 ms (13
-  // evaluations a sample at most); the drops and the trade do not depend on the flags' duration.
+  // evaluations a sample at most); then the scene's drop, the two drops of 6 s at 1 ms, and the
+  // trade's runs, six integrators each.
   const double per_second = 7 / setup.dt + 6 * (1e4 + 1e3 + 1e2 + 34) + 13e3;
+  double trade = 0;
+  for (long n : setup.trade_steps) trade += 6.0 * double(n);
   RunEstimate estimate;
-  estimate.steps = per_second * setup.t_end + scene_drop_seconds / setup.dt + 2e6;
+  estimate.steps = per_second * setup.t_end + scene_drop_seconds / setup.dt + 12e3 + trade;
   estimate.seconds_per_step = 5e-7;  // the polar step's SVD, the slowest, is 4e-7 s on a 2020 laptop
   // 2000 samples of each run, the frames' states, and the drop's samples: a few MB at most.
   estimate.bytes = 8e6 + 2.0 * double(setup.frames) * sizeof(RigidState);
@@ -100,8 +109,8 @@ RunEstimate estimate_rigid_runs(const RigidSetup& setup) {
 }
 
 std::string describe_rigid_run(const RigidFlags& flags) {
-  return fmt::format("--body {}, --integrator {}, --dt {} s, --t-end {} s", flags.body, flags.integrator, flags.dt,
-                     flags.t_end);
+  return fmt::format("--body {}, --integrator {}, --dt {} s, --t-end {} s, --trade-steps {}", flags.body,
+                     flags.integrator, flags.dt, flags.t_end, flags.trade_steps);
 }
 
 }  // namespace kit

@@ -119,7 +119,8 @@ TEST_CASE("chapter 8: the trade shows orders 4 and 2, and RK4's round-off floor"
 
 TEST_CASE("chapter 8: a box dropped flat rises to e² of its fall, never stays in the ground, gains no energy, rests") {
   for (const auto& [e, mu] : {std::pair{0.5, 0.3}, std::pair{0.8, 0.0}, std::pair{0.0, 1.0}}) {
-    const json s = run_chapter({"--restitution", std::to_string(e), "--friction", std::to_string(mu)});
+    const json s = run_chapter({"--restitution", std::to_string(e), "--friction", std::to_string(mu),
+                                "--trade-steps", "1000", "--t-end", "2"});
     for (const char* name : {"drop", "drop_tilted"}) {
       const json& d = s[name];
       INFO("e = " << e << ", μ = " << mu << ", " << name << ": " << d.dump());
@@ -144,7 +145,7 @@ TEST_CASE("chapter 8: a box dropped flat rises to e² of its fall, never stays i
 TEST_CASE("chapter 8: the scene run writes a PNG and an OBJ per frame, and every figure") {
   kit::test::TempDir out("ch08-frames");
   const auto result = kit::test::run_process(binary, {"--json", "--frames", "3", "--t-end", "2", "--format", "png",
-                                                      "--out", out.path().string()});
+                                                      "--trade-steps", "1000", "--out", out.path().string()});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   const json s = json::parse(result.out);
@@ -166,10 +167,12 @@ TEST_CASE("chapter 8: the scene run writes a PNG and an OBJ per frame, and every
 }
 
 TEST_CASE("chapter 8: explicit Euler on R at a large step diverges: a reported result, exit 0, or 3 when asked") {
-  const json s = run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20"});
+  const json s = run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20", "--trade-steps", "100"});
   REQUIRE(s.contains("divergences"));
   CHECK(long(s["scene"]["flips"]) != 6);
-  run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20", "--fail-on-divergence"}, 3);
+  CHECK(s["trade"].size() == 6);  // --trade-steps 100: one run of each integrator
+  run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20", "--trade-steps", "100",
+               "--fail-on-divergence"}, 3);
 }
 
 TEST_CASE("chapter 8 answers bad input with exit 2, a message naming the flag, and no file") {
@@ -180,5 +183,6 @@ TEST_CASE("chapter 8 answers bad input with exit 2, a message naming the flag, a
                {{"--t-end", "0"}, "--t-end"}, {{"--restitution", "1.5"}, "--restitution"},
                {{"--friction", "-1"}, "--friction"}, {{"--integrator", "verlet"}, "--integrator"},
                {{"--body", "sphere"}, "--body"}, {{"--frames", "-1"}, "--frames"},
-               {{"--dt", "0.05", "--t-end", "0.01"}, "--dt"}, {{"--t-end", "1e5", "--dt", "1e-4"}, "--t-end"}});
+               {{"--dt", "0.05", "--t-end", "0.01"}, "--dt"}, {{"--t-end", "1e5", "--dt", "1e-4"}, "--t-end"},
+               {{"--trade-steps", "99"}, "--trade-steps"}, {{"--trade-steps", "100000001"}, "--trade-steps"}});
 }

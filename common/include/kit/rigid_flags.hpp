@@ -2,6 +2,7 @@
 // Chapter 8's flags: the body, the integrator of the scene run, the step, the duration, the
 // initial spin, and the ground's restitution and friction.
 #include <string>
+#include <vector>
 
 #include <kit/chapter_app.hpp>
 #include <kit/rigid_contact.hpp>
@@ -19,9 +20,10 @@ struct RigidFlags {
   double restitution = 0.5;
   double friction = 0.3;
   long frames = 120;            ///< pictures and meshes of each scene run
+  long trade_steps = 1'000'000; ///< the most steps an integrator takes in the trade
 };
 
-/// Adds --body --integrator --dt --t-end --omega0 --restitution --friction --frames.
+/// Adds --body --integrator --dt --t-end --omega0 --restitution --friction --frames --trade-steps.
 void add_rigid_flags(ChapterApp& app, RigidFlags& flags);
 
 /// What the flags ask for, checked: the shape, the integrator, ω0 and the contact.
@@ -32,6 +34,7 @@ struct RigidSetup {
   GroundContact contact;
   double dt = 0, t_end = 0;    ///< [s]
   long frames = 0;
+  std::vector<long> trade_steps;  ///< 100, 300, 1000, … up to --trade-steps
 };
 
 /// Throws UsageError naming the flag, the value and what is allowed (--omega0 not three finite
