@@ -14,7 +14,7 @@
 // neither turns nor chatters. The body is then lifted out of the ground by the depth, plus e times
 // it when it bounces, as if it had turned back at the ground instead of at the bottom of the
 // step. That lift is a position fix, not a force: when a corner sank by turning while the centre
-// did not fall, it adds up to M g (1 + e) × depth of energy (tens of µJ for chapter 8's box).
+// did not fall, it adds up to M g (1 + e) × depth of energy (at most 1.6e-4 J in chapter 8's drops).
 #include <kit/rigid_body.hpp>
 
 namespace kit {
