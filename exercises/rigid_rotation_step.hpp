@@ -3,7 +3,8 @@
 // cross-product matrix of the angular velocity ω [rad/s] in the world frame (ERRATA 15: the
 // lecture's "*" means ω* a = ω × a for every vector a). One explicit Euler step of it,
 //   R_{k+1} = R_k + h ω* R_k,
-// leaves the rotations: RᵀR grows by h² (ω*)ᵀω* a step, so R stretches and shears (chapter 8).
+// leaves the rotations: RᵀR becomes RᵀR + h² Rᵀ(ω*)ᵀω* R (ω* is antisymmetric, so the first-order
+// terms cancel), so R stretches and shears a little more every step (chapter 8).
 #include <kit/not_implemented.hpp>
 #include <kit/rigid_body.hpp>
 

@@ -3,6 +3,7 @@
 // tumbling T-handle, whose spin about its intermediate axis flips (the Dzhanibekov effect); then
 // "− collisions": a box dropped on the ground.
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -24,19 +25,8 @@ using Integrators = std::vector<RotationIntegrator>;
 // 1. "ω(t) = I(t)⁻¹ L(t), I(t) = R I_body Rᵀ": the body and the closed form of its torque-free
 //    motion (Landau & Lifshitz §37); ex 8.3 against the inverse of the world inertia.
 void the_body(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels, const RigidState& start) {
-  const kit::Vec3 moments = s.shape.principal_moments();
-  app.report().say("body", "1. The {body}, {mass:g} kg: principal moments {i1:.4e}, {i2:.4e}, {i3:.4e} kg·m². "
-                   "Started at ω = ({w}) rad/s in its body frame, the closed form flips it every {interval:.5f} s.\n",
-                   {{"body", s.shape.name}, {"mass", s.shape.mass}, {"i1", moments[0]}, {"i2", moments[1]},
-                    {"i3", moments[2]}, {"w", fmt::format("{:g}, {:g}, {:g}", s.omega0[0], s.omega0[1], s.omega0[2])},
-                    {"interval", kit::closed_form_flip_interval(s.shape, start)}});
-  const kit::Mat3 R = kit::Quat(0.6, 0.2, -0.7, 0.3).normalized().toRotationMatrix();
-  const kit::Vec3 L(0.3, -0.1, 0.2), direct = (R * s.shape.inertia * R.transpose()).inverse() * L;
-  app.report().attempt("ω from L (ex 8.3)", [&] {
-    const double error = (kernels.angular_velocity(R, s.shape.inverse_inertia, L) - direct).norm() / direct.norm();
-    app.report().say("omega", "Your ω = R I⁻¹ Rᵀ L (ex 8.3) differs from (R I Rᵀ)⁻¹ L by {error:.1e} (relative).\n",
-                     {{"error", error}});
-  });
+  kit::print_body(app.report(), s.shape, s.omega0, kit::closed_form_flip_interval(s.shape, start));
+  app.report().attempt("ω from L (ex 8.3)", [&] { kit::print_angular_velocity_check(app.report(), kernels, s.shape); });
   app.report().print("\n");
 }
 
@@ -106,7 +96,8 @@ void scene_runs(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernel
   const auto drop = kit::run_drop(kernels, s.integrator, box, kit::dropped_state(box, 1.0, 30), s.contact, s.dt,
                                   kit::scene_drop_seconds, s.frames);
   for (const auto& [what, at] : {std::pair{"tumbling", tumble.diverged_at}, std::pair{"dropped", drop.diverged_at}})
-    if (at >= 0) app.diverged(fmt::format("{} ({})", what, kit::flag_name(s.integrator)), fmt::format("at t = {:.4g} s", at));
+    if (at >= 0)
+      app.diverged(fmt::format("{} ({})", what, kit::flag_name(s.integrator)), fmt::format("at t = {:.4g} s", at));
   app.report().say("scene", "\n6. With {integrator} at h = {h:.3g} s: the {body} tumbles {t:g} s and flips {flips} "
                    "times, |ΔE|/E ≤ {energy:.2g}; the box dropped tilted 30° bounces {bounces} times.\n",
                    {{"integrator", kit::display_name(s.integrator)}, {"h", s.dt}, {"body", s.shape.name},

@@ -98,7 +98,9 @@ ContactEvent resolve_ground_contact(const RigidShape& shape, RigidState& state, 
   do {
     ++event.sweeps;
   } while (sweep(corners, body, e, contact.friction) > 1e-14 * scale && event.sweeps < max_contact_sweeps);
+  const double kinetic_before = kinetic_energy(shape, state);
   body.store(state);
+  event.kinetic_change = kinetic_energy(shape, state) - kinetic_before;
   Vec3 friction = Vec3::Zero();
   for (const auto& c : corners) {
     event.normal_impulse += c.normal;

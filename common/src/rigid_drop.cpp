@@ -27,7 +27,6 @@ DropRun run_drop(const RigidKernels& kernels, RotationIntegrator integrator, con
   DropRun run;
   const Vec3 weight(0, -shape.mass * contact.gravity, 0);  // [N]
   const long steps = std::max(1L, std::lround(t_end / h));
-  const long frame_every = std::max(1L, steps / std::max(1L, frames));
   const long sample_every = std::max(1L, steps / max_drop_samples);
   const auto sample = [&](const RigidState& s, double t) {
     return DropSample{t, s.x.y(), lowest_point(shape, s), kinetic_energy(shape, s),
@@ -35,7 +34,7 @@ DropRun run_drop(const RigidKernels& kernels, RotationIntegrator integrator, con
   };
   RigidState state = start;
   run.samples.push_back(sample(state, 0));
-  run.frames.push_back(state);
+  if (frames > 0) run.frames.push_back(state);
   bool rising = false;  // after a bounce, until the next contact: the apex is the highest centre
   ProgressCounter progress;
   for (long k = 1; k <= steps; ++k) {
@@ -57,6 +56,8 @@ DropRun run_drop(const RigidKernels& kernels, RotationIntegrator integrator, con
       run.friction_impulse += event.friction_impulse;
       run.largest_gain = std::max(run.largest_gain, now.total() - before);
       run.most_sweeps = std::max(run.most_sweeps, event.sweeps);
+      run.unconverged_contacts += event.sweeps >= max_contact_sweeps;
+      run.largest_impulse_gain = std::max(run.largest_impulse_gain, event.kinetic_change);
       run.deepest_after = std::min(run.deepest_after, now.lowest);
       if (event.bounced) run.apexes.push_back(now.centre_height);
       rising = event.bounced;
@@ -64,7 +65,7 @@ DropRun run_drop(const RigidKernels& kernels, RotationIntegrator integrator, con
       run.apexes.back() = std::max(run.apexes.back(), now.centre_height);
     }
     if (k % sample_every == 0 || event.bounced) run.samples.push_back(now);
-    if (k % frame_every == 0 && long(run.frames.size()) <= frames) run.frames.push_back(state);
+    if (frames > 0 && k == frame_step(long(run.frames.size()), steps, frames)) run.frames.push_back(state);
   }
   run.end = state;
   return run;

@@ -17,7 +17,7 @@ double relative(double value, double start) { return start == 0 ? value : (value
 
 RotationSample sample_of(const RigidShape& shape, const RigidState& state, double t, double e0, double l0) {
   return {t, body_angular_velocity(shape, state), relative(rotational_energy(shape, state), e0),
-          relative(state.L.norm(), l0), orthonormality_error(state.R)};
+          relative(state.L.norm(), l0), relative(body_momentum(state).norm(), l0), orthonormality_error(state.R)};
 }
 
 bool finite(const RigidState& state) { return state.R.allFinite() && state.L.allFinite(); }
@@ -32,6 +32,20 @@ std::array<int, 3> axes_by_moment(const RigidShape& shape) {
 
 int intermediate_axis(const RigidShape& shape) { return axes_by_moment(shape)[1]; }
 
+bool FlipCounter::add(double t, const Vec3& omega_body) {
+  const double along = omega_body[axis_];
+  if (started_ && (along < 0) != (before_ < 0) && along != before_)
+    crossed_ = t - (t - before_t_) * along / (along - before_);
+  started_ = true;
+  before_ = along, before_t_ = t;
+  if (!(std::abs(along) > 0.5 * omega_body.norm())) return false;
+  const int side = along > 0 ? 1 : -1;
+  const bool flipped = side_ != 0 && side != side_;
+  if (flipped) times_.push_back(crossed_);
+  side_ = side;
+  return flipped;
+}
+
 double RotationRun::flip_interval() const {
   if (flip_times.size() < 2) return std::numeric_limits<double>::quiet_NaN();
   return (flip_times.back() - flip_times.front()) / double(flip_times.size() - 1);
@@ -44,20 +58,15 @@ RotationRun run_free_rotation(const RigidKernels& kernels, RotationIntegrator in
   run.h = h;
   run.steps = std::max(1L, std::lround(t_end / h));
   const long stride = std::max(1L, run.steps / std::max(1L, max_samples - 1));
-  const long frame_every = std::max(1L, run.steps / std::max(1L, frames));
-  const int axis = intermediate_axis(shape);
   const double e0 = rotational_energy(shape, start), l0 = start.L.norm();
   RigidState state = start;
   run.samples.push_back(sample_of(shape, state, 0, e0, l0));
   if (frames > 0) run.frames.push_back(state);
-  // A flip is counted when ω along the intermediate axis reaches the other side of ±a tenth of the
-  // largest |ω| seen along it, at the time of its last zero crossing: a wobble about zero (a body
-  // that ended up spinning about another axis) is no flip.
-  double before = run.samples.back().omega_body[axis], largest = std::abs(before), crossed = 0;
-  int side = before > 0 ? 1 : before < 0 ? -1 : 0;
+  FlipCounter flips(intermediate_axis(shape));
+  flips.add(0, run.samples.back().omega_body);
   ProgressCounter progress;
   for (long k = 1; k <= run.steps; ++k) {
-    rotation_step(kernels, integrator, shape, state, h);
+    run.unconverged_steps += rotation_step(kernels, integrator, shape, state, h) ? 0 : 1;
     progress.add(1);
     const double t = double(k) * h;
     if (!finite(state)) {
@@ -65,21 +74,15 @@ RotationRun run_free_rotation(const RigidKernels& kernels, RotationIntegrator in
       break;
     }
     const RotationSample now = sample_of(shape, state, t, e0, l0);
-    const double along = now.omega_body[axis];
-    if ((along < 0) != (before < 0) && along != before) crossed = t - h * along / (along - before);
-    largest = std::max(largest, std::abs(along));
-    if (std::abs(along) > largest / 10) {
-      const int now_side = along > 0 ? 1 : -1;
-      if (side != 0 && now_side != side) run.flip_times.push_back(crossed);
-      side = now_side;
-    }
-    before = along;
+    flips.add(t, now.omega_body);
     run.max_energy_drift = std::max(run.max_energy_drift, std::abs(now.energy_drift));
     run.max_momentum_drift = std::max(run.max_momentum_drift, std::abs(now.momentum_drift));
+    run.max_body_momentum_drift = std::max(run.max_body_momentum_drift, std::abs(now.body_momentum_drift));
     run.max_orthonormality = std::max(run.max_orthonormality, now.orthonormality);
     if (k % stride == 0 || k == run.steps) run.samples.push_back(now);
-    if (frames > 0 && k % frame_every == 0 && long(run.frames.size()) <= frames) run.frames.push_back(state);
+    if (frames > 0 && k == frame_step(long(run.frames.size()), run.steps, frames)) run.frames.push_back(state);
   }
+  run.flip_times = flips.times();
   run.end = state;
   return run;
 }
@@ -103,14 +106,14 @@ std::vector<AxisSpin> spins_about_axes(const RigidShape& shape, double t_end) {
     omega[(axis + 2) % 3] = 0.1;     // the disturbance, 1% of the spin
     spin.run = run_free_rotation({}, RotationIntegrator::rk4, shape, spinning_state(shape, Vec3::Zero(), omega),
                                  1e-3, t_end);
-    double before = omega[axis];
+    FlipCounter flips(axis);
     for (const auto& sample : spin.run.samples) {
       const Vec3& w = sample.omega_body;
       const double cosine = std::min(1.0, std::abs(w[axis]) / w.norm());
       spin.max_deviation_deg = std::max(spin.max_deviation_deg, std::acos(cosine) * 180 / M_PI);
-      if ((w[axis] < 0) != (before < 0)) ++spin.flips_about_axis;
-      before = w[axis];
+      flips.add(sample.t, w);
     }
+    spin.flips_about_axis = long(flips.times().size());
     spins.push_back(std::move(spin));
   }
   return spins;
@@ -139,29 +142,28 @@ RotationTrade rotation_trade(const RigidKernels& kernels, const std::vector<Rota
   return trade;
 }
 
+double reference_sampling(const RigidShape& shape, const RigidState& start) {
+  return std::min(1e-3, 0.05 / body_angular_velocity(shape, start).norm());
+}
+
 std::vector<double> reference_flip_times(const RigidShape& shape, const RigidState& start, double t_end) {
-  // Sampled every 1 ms, 10⁴ samples at a time from where the last chunk ended, so that a long run
-  // keeps one chunk of states, not all of them.
-  constexpr double every = 1e-3;  // [s]
+  // 10⁴ samples at a time from where the last chunk ended, so that a long run keeps one chunk of
+  // states, not all of them.
+  const double every = reference_sampling(shape, start);  // [s]
   constexpr long chunk = 10'000;
-  const int axis = intermediate_axis(shape);
   const long samples = std::lround(t_end / every);
-  std::vector<double> flips;
+  FlipCounter flips(intermediate_axis(shape));
+  flips.add(0, body_angular_velocity(shape, start));
   RigidState from = start;
-  double before = body_angular_velocity(shape, start)[axis];
   for (long first = 1; first <= samples; first += chunk) {
     std::vector<double> times;
     for (long k = first; k < first + chunk && k <= samples; ++k) times.push_back(double(k - first + 1) * every);
     const auto states = free_rotation_reference(shape, from, times);
-    for (std::size_t k = 0; k < states.size(); ++k) {
-      const double after = body_angular_velocity(shape, states[k])[axis];
-      const double t = double(first + long(k)) * every;
-      if ((after < 0) != (before < 0) && after != before) flips.push_back(t - every * after / (after - before));
-      before = after;
-    }
+    for (std::size_t k = 0; k < states.size(); ++k)
+      flips.add(double(first + long(k)) * every, body_angular_velocity(shape, states[k]));
     from = states.back();
   }
-  return flips;
+  return flips.times();
 }
 
 std::vector<FlipSweepRow> flip_sweep(const RigidKernels& kernels, const std::vector<RotationIntegrator>& integrators,

@@ -30,7 +30,7 @@ std::string rigid_style(RotationIntegrator integrator) {
 }
 
 Figure rigid_flips_figure(const std::vector<RotationRun>& runs, const RigidShape& shape,
-                          const std::vector<double>& closed_form_flips) {
+                          const std::vector<double>& reference_flips) {
   const int axis = intermediate_axis(shape);
   Figure fig("flips", fmt::format("The {}'s spin about its intermediate axis ({}) flips; dotted: the reference's "
                                   "flips (GSL rk8pd)", shape.name, axis_name(axis)));
@@ -48,7 +48,7 @@ Figure rigid_flips_figure(const std::vector<RotationRun>& runs, const RigidShape
     std::vector<double> t, w;
     for (const auto& s : run.samples) t.push_back(s.t), w.push_back(s.omega_body[axis]);
     p.line(display_name(run.integrator), t, w, rigid_style(run.integrator) + " lw 1.5");
-    for (double f : closed_form_flips)
+    for (double f : reference_flips)
       p.commands.push_back(fmt::format("set arrow from {0},graph 0 to {0},graph 1 nohead {1}", f, look::guide));
     if (!t.empty()) p.commands.push_back(fmt::format("set xrange [0:{}]", t.back()));
   }
@@ -131,7 +131,8 @@ Figure rigid_trade_figure(const RotationTrade& trade, const std::string& body) {
   p.commands.push_back("set format y '10^{%T}'");
   for (const auto& [integrator, curve] : trade.curves) {
     std::vector<double> seconds, error;
-    for (const auto& point : curve) seconds.push_back(std::max(point.seconds, 1e-7)), error.push_back(shown(point.error));
+    for (const auto& point : curve)
+      seconds.push_back(std::max(point.seconds, 1e-7)), error.push_back(shown(point.error));
     p.add({display_name(integrator), seconds, error, "linespoints", rigid_style(integrator) + " lw 1.5 pt 7"});
   }
   return fig;

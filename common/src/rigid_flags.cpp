@@ -1,5 +1,7 @@
 #include <kit/rigid_flags.hpp>
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -30,14 +32,15 @@ Vec3 parse_omega(const std::string& text) {
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
-    std::size_t used = 0;
+    // std::from_chars reads plain decimal numbers only (no hex, no locale), and tells a number
+    // too large for a double from text that is no number.
+    const auto first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+    const char* begin = item.data() + (first == std::string::npos ? item.size() : first);
+    const char* end = item.data() + (last == std::string::npos ? 0 : last + 1);
     double value = 0;
-    try {
-      value = std::stod(item, &used);
-    } catch (const std::exception&) {
-      throw refuse(fmt::format("'{}' is not a number", item));
-    }
-    if (item.find_first_not_of(" \t", used) != std::string::npos) throw refuse(fmt::format("'{}' is not a number", item));
+    const auto [stop, error] = std::from_chars(begin, std::max(begin, end), value);
+    if (error == std::errc::result_out_of_range) throw refuse(fmt::format("{} is out of range", item));
+    if (error != std::errc() || stop != std::max(begin, end)) throw refuse(fmt::format("'{}' is not a number", item));
     if (!std::isfinite(value) || std::abs(value) > max_spin) throw refuse(fmt::format("{} is out of range", item));
     values.push_back(value);
   }
@@ -87,7 +90,7 @@ RigidSetup rigid_setup(const RigidFlags& flags) {
     if (3 * n <= flags.trade_steps) setup.trade_steps.push_back(3 * n);
   }
   if (flags.dt > flags.t_end)
-    throw UsageError(fmt::format("--dt {} s is longer than --t-end {} s: the run would take no step", flags.dt,
+    throw UsageError(fmt::format("--dt {} s is longer than --t-end {} s: --dt must be at most --t-end", flags.dt,
                                  flags.t_end));
   return setup;
 }

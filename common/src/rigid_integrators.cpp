@@ -46,9 +46,20 @@ int midpoint_rotation_step(const RigidShape& shape, RigidState& state, double h)
     change = (after - previous).norm();
     ++iterations;
   } while (change > 1e-16 * before.norm() && !(change >= last_change && change < 1e-12 * before.norm()) &&
-           iterations < 100);
+           iterations < midpoint_max_iterations);
   state.R = state.R * turn;  // L = R L_b is left as it was: R⁺ L_b⁺ = R turn turnᵀ L_b
   return iterations;
+}
+
+bool midpoint_rotation_substeps(const RigidShape& shape, RigidState& state, double h, int depth) {
+  RigidState trial = state;
+  if (midpoint_rotation_step(shape, trial, h) < midpoint_max_iterations || depth >= 16) {
+    state = trial;
+    return true;
+  }
+  midpoint_rotation_substeps(shape, state, h / 2, depth + 1);
+  midpoint_rotation_substeps(shape, state, h / 2, depth + 1);
+  return false;
 }
 
 void rk4_rotation_step(const RigidShape& shape, RigidState& state, double h) {

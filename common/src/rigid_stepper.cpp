@@ -48,16 +48,17 @@ std::optional<RotationIntegrator> rotation_integrator_named(const std::string& n
   return std::nullopt;
 }
 
-void rotation_step(const RigidKernels& kernels, RotationIntegrator integrator, const RigidShape& shape,
+bool rotation_step(const RigidKernels& kernels, RotationIntegrator integrator, const RigidShape& shape,
                    RigidState& state, double h) {
   switch (integrator) {
-    case RotationIntegrator::midpoint:
-      midpoint_rotation_step(shape, state, h);
+    case RotationIntegrator::midpoint: {
+      const bool whole = midpoint_rotation_substeps(shape, state, h);
       state.q = Quat(state.R);
-      return;
+      return whole;
+    }
     case RotationIntegrator::rk4:
       rk4_rotation_step(shape, state, h);
-      return;
+      return true;
     default:
       break;
   }
@@ -66,19 +67,19 @@ void rotation_step(const RigidKernels& kernels, RotationIntegrator integrator, c
   switch (integrator) {
     case RotationIntegrator::euler_matrix:
       state.R = kernels.explicit_rotation_step(state.R, omega, h);
-      return;  // R is no rotation: q is left as it was, unused
+      return true;  // R is no rotation: q is left as it was, unused
     case RotationIntegrator::euler_polar:
       state.R = nearest_rotation(kernels.explicit_rotation_step(state.R, omega, h));
       state.q = Quat(state.R);
-      return;
+      return true;
     case RotationIntegrator::euler_quaternion:
       state.q = kernels.quaternion_step(state.q, omega, h);
       state.R = state.q.toRotationMatrix();
-      return;
+      return true;
     default:  // the exponential map
       state.R = kernels.exponential_map_step(state.R, omega, h);
       state.q = Quat(state.R);
-      return;
+      return true;
   }
 }
 

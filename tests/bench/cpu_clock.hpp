@@ -1,7 +1,7 @@
 #pragma once
-// This thread's CPU time [s], and the machine's load, for the benchmarks. Other work on the machine's two cores takes the
-// thread off its core now and then: the wall clock counts those pauses, this clock does not (the
-// caches it shares still slow it).
+// This thread's CPU time [s], and the machine's load, for the benchmarks. Other work on the
+// machine's two cores takes the thread off its core now and then: the wall clock counts those
+// pauses, this clock does not (the caches it shares still slow it).
 #include <cmath>
 #include <cstdlib>
 #include <ctime>

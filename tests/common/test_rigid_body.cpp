@@ -229,7 +229,7 @@ TEST_CASE("a box dropped flat bounces to e² of its height and never stays below
       CHECK(deepest_after > -1e-12);
       CHECK(deepest_before > -std::sqrt(2 * 9.81) * h * 1.5);  // at most a step's travel at impact speed
       CHECK(state.x.y() == Approx(0.1).margin(1e-3));  // at rest on its face at the end
-      CHECK(state.R.isApprox(Mat3::Identity()));       // a flat drop does not turn it
+      CHECK((state.R - Mat3::Identity()).norm() < 1e-12);  // a flat drop does not turn it
     }
   }
 }

@@ -44,7 +44,8 @@ struct RigidShape {
 /// I = M/12 diag(b² + c², a² + c², a² + b²).
 RigidShape box_shape(double mass, const Vec3& sides);
 /// A solid cylinder of mass M [kg], radius r and height h [m], its axis along y:
-/// I_y = M r²/2, I_x = I_z = M (3 r² + h²)/12. Drawn and collided as its 16-sided prism.
+/// I_y = M r²/2, I_x = I_z = M (3 r² + h²)/12. Collided as its 16-sided prism, drawn as its
+/// bounding box (its one part).
 RigidShape cylinder_shape(double mass, double radius, double height);
 /// The T-handle of the Dzhanibekov effect: a bar 30 × 4 × 4 cm along x and a stem 4 × 30 × 4 cm
 /// along −y from the bar's middle, of one density, mass M [kg] in all. Its principal axes are

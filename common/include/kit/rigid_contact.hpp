@@ -37,7 +37,8 @@ struct ContactEvent {
   double normal_impulse = 0;    ///< Σ λ_i [N·s]
   double friction_impulse = 0;  ///< |Σ f_i| [N·s]: the net friction (corners' can cancel)
   bool bounced = false;         ///< restitution applied (else the contact rests)
-  int sweeps = 0;               ///< Gauss–Seidel sweeps taken
+  int sweeps = 0;               ///< Gauss–Seidel sweeps taken (max_contact_sweeps: not converged)
+  double kinetic_change = 0;    ///< kinetic energy after the impulses − before, the lift apart [J]
 };
 
 /// The lowest point of the body, min over its corners of (x + R c).y [m].
@@ -46,7 +47,8 @@ double lowest_point(const RigidShape& shape, const RigidState& state);
 /// Resolves the body against the ground y = 0, as above. Returns what happened (points = 0: no contact).
 ContactEvent resolve_ground_contact(const RigidShape& shape, RigidState& state, const GroundContact& contact);
 
-/// At most this many Gauss–Seidel sweeps: a box's 4 to 8 corners converge in a few dozen.
+/// At most this many Gauss–Seidel sweeps: a box's corners resting flat converge in about 30; a
+/// box rocking on an edge, whose corners' restitution targets conflict, can take them all.
 inline constexpr int max_contact_sweeps = 200;
 
 }  // namespace kit

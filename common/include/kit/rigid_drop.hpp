@@ -32,15 +32,18 @@ struct DropRun {
   double deepest = 0;               ///< deepest corner before a contact was resolved [m]
   double deepest_after = 0;         ///< deepest corner after it (≤ 0) [m]
   double friction_impulse = 0;      ///< Σ |f| over the run [N·s]
-  double largest_gain = 0;          ///< the largest energy increase across one contact [J]
+  double largest_gain = 0;          ///< the largest energy increase across one contact, lift included [J]
   int most_sweeps = 0;              ///< Gauss–Seidel sweeps of the hardest contact
+  int unconverged_contacts = 0;     ///< contacts that used all max_contact_sweeps
+  double largest_impulse_gain = 0;  ///< the largest kinetic energy the impulses added [J] (≤ 0: none)
   double diverged_at = -1;          ///< [s]; −1 if never
   RigidState end;
 };
 
 /// Drops the body from `start` for t_end [s] at step h: gravity contact.gravity along −y (P += h M g,
 /// exact for x), the
-/// rotation by `integrator`, then the ground contact. Keeps `frames` + 1 states for output.
+/// rotation by `integrator`, then the ground contact. Keeps `frames` + 1 states evenly spaced in
+/// time for output.
 DropRun run_drop(const RigidKernels& kernels, RotationIntegrator integrator, const RigidShape& shape,
                  const RigidState& start, const GroundContact& contact, double h, double t_end, long frames);
 

@@ -14,9 +14,9 @@ namespace kit {
 std::string rigid_style(RotationIntegrator integrator);
 
 /// "flips": ω along the intermediate axis against time, one panel per integrator, with the
-/// closed form's flip times as guides.
+/// reference's flip times (GSL) as guides.
 Figure rigid_flips_figure(const std::vector<RotationRun>& runs, const RigidShape& shape,
-                          const std::vector<double>& closed_form_flips);
+                          const std::vector<double>& reference_flips);
 /// "drift": relative drift of E and of |L| against time (log scale, |drift|).
 Figure rigid_drift_figure(const std::vector<RotationRun>& runs, const std::string& body);
 /// "orthonormality": ‖RᵀR − I‖ against time.

@@ -10,6 +10,14 @@
 
 namespace kit {
 
+/// summary["body"]: the shape's mass and principal moments, ω0 [rad/s, body frame] and the closed
+/// form's time between sign changes of ω along the intermediate axis (`interval` [s], +∞ when two
+/// moments are equal: then nothing flips).
+void print_body(Report& report, const RigidShape& shape, const Vec3& omega0, double interval);
+/// summary["omega"]: ex 8.3's ω = R I⁻¹ Rᵀ L against (R I Rᵀ)⁻¹ L at one orientation, relative.
+/// Throws NotImplemented while ex 8.3 waits.
+void print_angular_velocity_check(Report& report, const RigidKernels& kernels, const RigidShape& shape);
+
 /// The integrators whose exercises are written: each one tries a step, and the report names
 /// the ones that wait ("[skipped] explicit Euler on R: ex 8.1 is not implemented yet …").
 std::vector<RotationIntegrator> available_rotation_integrators(Report& report, const RigidKernels& kernels,

@@ -7,8 +7,10 @@
 //   euler-R-polar  the same, then R ← its nearest rotation (polar factor): back on SO(3);
 //   euler-q        q += h/2 (0, ω) ⊗ q, then q/|q|: a rotation always, first order;
 //   exp-map        R ← exp(h ω*) R (Rodrigues): a rotation always, first order (ω frozen);
-//   midpoint       the implicit midpoint on L_b: E, |L| and RᵀR = 1 to round-off, second order;
+//   midpoint       the implicit midpoint on L_b: E, |L| and RᵀR = 1 to round-off, second order
+//                  (a step whose fixed point stalls is split into halves);
 //   rk4            classical RK4 on (q, L_b): fourth order, E and |L| drift at O(h⁴).
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,10 +46,17 @@ std::string exercises_of(RotationIntegrator integrator);
 
 /// Turns `state` (R, and q for the quaternion integrators; L as it is) over h [s] without
 /// torque; x and P are left alone. The kit's integrators keep R and q in step; the lecture's
-/// keep the one they step and set the other from it when it is a rotation.
+/// keep the one they step and set the other from it when it is a rotation. Returns false when
+/// the midpoint's fixed point stalled and the step was split (midpoint_rotation_substeps).
 /// Throws NotImplemented when a kernel it needs is a student's placeholder.
-void rotation_step(const RigidKernels& kernels, RotationIntegrator integrator, const RigidShape& shape,
+bool rotation_step(const RigidKernels& kernels, RotationIntegrator integrator, const RigidShape& shape,
                    RigidState& state, double h);
+
+/// The step at which frame j of `frames` frames over `steps` steps is taken, round(j steps /
+/// frames): frames evenly spaced over the whole run.
+inline long frame_step(long j, long steps, long frames) {
+  return std::lround(double(j) * double(steps) / double(frames));
+}
 
 /// ω in the body frame, I_body⁻¹ Rᵀ L [rad/s]: what the flips are seen in.
 Vec3 body_angular_velocity(const RigidShape& shape, const RigidState& state);
