@@ -9,7 +9,10 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <kit/rigid_stepper.hpp>
+
 #include "process.hpp"
+#include "rigid_kernels.hpp"
 
 using nlohmann::json;
 
@@ -194,6 +197,20 @@ TEST_CASE("chapter 8: explicit Euler on R at a large step diverges: a reported r
   CHECK(s["trade"].size() == 6);  // --trade-steps 100: one run of each integrator
   run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20", "--trade-steps", "100",
                "--fail-on-divergence"}, 3);
+}
+
+TEST_CASE("chapter 8: the exponential map keeps RᵀR = I to round-off over 10⁶ steps; Euler on R drifts by h² a step") {
+  // In process, through the chapter's own wiring of the reference solutions (rigid_kernels.hpp).
+  const kit::RigidKernels kernels = kit::student_rigid_kernels();
+  const kit::RigidShape shape = kit::t_handle_shape(0.5);
+  kit::RigidState exact = kit::spinning_state(shape, kit::Vec3::Zero(), kit::Vec3(10, 0, 0.1)), euler = exact;
+  const double h = 1e-5;  // 10 s in 10⁶ steps
+  using kit::RotationIntegrator;
+  for (long k = 0; k < 1'000'000; ++k) kit::rotation_step(kernels, RotationIntegrator::exponential_map, shape, exact, h);
+  for (long k = 0; k < 1'000; ++k) kit::rotation_step(kernels, RotationIntegrator::euler_matrix, shape, euler, h);
+  // Round-off of about 1e-16 a step, accumulated: far below the 1e-3 · h|ω|² growth of Euler on R.
+  CHECK(kit::orthonormality_error(exact.R) < 1e-10);
+  CHECK(kit::orthonormality_error(euler.R) > 1e-7);  // 1000 steps of h²|ω|² = 1e-8 each
 }
 
 TEST_CASE("chapter 8 answers bad input with exit 2, a message naming the flag, and no file") {
