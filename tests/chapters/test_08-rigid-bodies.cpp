@@ -224,5 +224,5 @@ TEST_CASE("chapter 8 answers bad input with exit 2, a message naming the flag, a
                {{"--friction", "-1"}, "--friction"}, {{"--integrator", "verlet"}, "--integrator"},
                {{"--body", "sphere"}, "--body"}, {{"--frames", "-1"}, "--frames"},
                {{"--dt", "0.05", "--t-end", "0.01"}, "--dt"}, {{"--t-end", "1e5", "--dt", "1e-4"}, "over the limit"},
-               {{"--trade-steps", "99"}, "--trade-steps"}, {{"--trade-steps", "100000001"}, "--trade-steps"}});
+               {{"--trade-steps", "99"}, "--trade-steps"}, {{"--trade-steps", "10000001"}, "--trade-steps"}});
 }
