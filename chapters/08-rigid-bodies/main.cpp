@@ -78,13 +78,13 @@ void cost_of_accuracy(ChapterApp& app, const RigidSetup& s, const RigidKernels& 
 void collisions(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels) {
   const auto box = kit::shape_named("box");
   app.report().print("\n5. A box dropped from 1 m, rotation by the implicit midpoint, h = 1 ms:\n");
-  for (const auto& [name, tilt] : {std::pair{"drop", 0.0}, std::pair{"drop_tilted", 30.0}}) {
-    const std::string what = tilt == 0 ? "flat" : "tilted 30°";
+  for (const auto& [name, tilt] : {std::pair{"drop", 0.0}, std::pair{"drop_tilted", kit::drop_tilt_deg}}) {
+    const std::string what = tilt == 0 ? "flat" : fmt::format("tilted {:g}°", tilt);
     const kit::DropRun run = kit::run_drop(kernels, RotationIntegrator::midpoint, box,
-                                           kit::dropped_state(box, 1.0, tilt), s.contact, 1e-3, 6.0, 0);
+                                           kit::dropped_state(box, kit::drop_height, tilt), s.contact, 1e-3, 6.0, 0);
     const double resting = kit::resting_height(box, kit::Mat3::Identity());
-    kit::print_drop(app.report(), name, what, run, s.contact, 1.0, resting);
-    app.figure(kit::rigid_drop_figure(name, "A box dropped " + what, run, s.contact, 1.0));
+    kit::print_drop(app.report(), name, what, run, s.contact, kit::drop_height, resting);
+    app.figure(kit::rigid_drop_figure(name, "A box dropped " + what, run, s.contact, kit::drop_height));
   }
 }
 
@@ -93,8 +93,8 @@ void collisions(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernel
 void scene_runs(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels, const RigidState& start) {
   const auto box = kit::shape_named("box");
   const auto tumble = kit::run_free_rotation(kernels, s.integrator, s.shape, start, s.dt, s.t_end, 2, s.frames);
-  const auto drop = kit::run_drop(kernels, s.integrator, box, kit::dropped_state(box, 1.0, 30), s.contact, s.dt,
-                                  kit::scene_drop_seconds, s.frames);
+  const auto tilted = kit::dropped_state(box, kit::drop_height, kit::drop_tilt_deg);
+  const auto drop = kit::run_drop(kernels, s.integrator, box, tilted, s.contact, s.dt, kit::scene_drop_seconds, s.frames);
   for (const auto& [what, at] : {std::pair{"tumbling", tumble.diverged_at}, std::pair{"dropped", drop.diverged_at}})
     if (at >= 0)
       app.diverged(fmt::format("{} ({})", what, kit::flag_name(s.integrator)), fmt::format("at t = {:.4g} s", at));

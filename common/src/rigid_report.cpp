@@ -95,7 +95,8 @@ void print_trade(Report& report, const RotationTrade& trade) {
                                       {"‖R − R_ref‖", "error", "{:.2e}"}, {"wall [ms]", "timing_ms", "{:.3g}"}});
   for (const auto& [integrator, curve] : trade.curves)
     for (const auto& p : curve)
-      table.row({flag_name(integrator), p.steps, p.h, p.error, 1e3 * p.seconds});
+      table.row({flag_name(integrator), p.steps, p.h,
+                 std::isfinite(p.error) ? ReportValue(p.error) : ReportValue("diverged"), 1e3 * p.seconds});
   table.print();
 }
 

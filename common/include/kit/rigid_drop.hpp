@@ -8,6 +8,9 @@
 
 namespace kit {
 
+/// Chapter 8's drops: from this height [m] (the lowest corner), flat and tilted by this angle [°].
+inline constexpr double drop_height = 1.0, drop_tilt_deg = 30.0;
+
 /// The body at rest, turned by `tilt_deg` [°] about z, its lowest corner `height` [m] above the ground.
 RigidState dropped_state(const RigidShape& shape, double height, double tilt_deg);
 
