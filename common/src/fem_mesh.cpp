@@ -75,7 +75,8 @@ TriangleMesh regular_rectangle_mesh(double width, double height, int nx, int ny,
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 2, d = a + nx + 1;  // counter-clockwise
-      const bool rising = diagonal == CellDiagonal::rising || (diagonal == CellDiagonal::alternating && (i + j) % 2 == 0);
+      const bool rising =
+          diagonal == CellDiagonal::rising || (diagonal == CellDiagonal::alternating && (i + j) % 2 == 0);
       if (rising) {
         mesh.triangles.push_back({a, b, c});
         mesh.triangles.push_back({a, c, d});
