@@ -1,0 +1,23 @@
+#pragma once
+// Ex 9.3: the element's stiffness ∂f/∂x (9×9, fem_element.hpp), which the implicit step needs
+// (chapter 7's A = M − h² ∂f/∂x) and the static solve too. Differentiate the forces along a move
+// dx of the nodes, one coordinate at a time:
+//   dDs = [dx1 − dx0, dx2 − dx0],   dF = dDs Dm⁻¹,
+//   dE = ½(dFᵀ F + Fᵀ dF),          dS = λ tr(dE) I + 2μ dE,
+//   dP = dF S + F dS,               dH = −V dP Dm⁻ᵀ,   df0 = −(dh1 + dh2).
+// Moving coordinate k of node a gives column 3a + k. The result is symmetric (the forces are an
+// energy's gradient) and sends every rigid translation to zero.
+#include <kit/fem_element.hpp>
+#include <kit/not_implemented.hpp>
+
+namespace kit {
+
+/// ∂f/∂x [N/m] of the St Venant–Kirchhoff element at deformation gradient F, with Dm⁻¹ [1/m],
+/// rest volume V [m³] and Lamé's parameters [Pa]; rows and columns ordered (x0, y0, z0, x1, ...).
+inline Matrix9 stvk_stiffness(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume,
+                              const Lame& lame) {
+  // TODO(ex 9.3): E and S at F; for each node a and axis k: dDs, dF, dE, dS, dP, dH as above → column 3a + k
+  throw kit::NotImplemented("ex 9.3", "fem_stvk_stiffness.hpp");
+}
+
+}  // namespace kit
