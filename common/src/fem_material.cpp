@@ -31,6 +31,12 @@ double cantilever_tip_deflection(double load_per_length, double length, double y
   return load_per_length * std::pow(length, 4) / (8 * young * second_moment);
 }
 
+double timoshenko_tip_deflection(double load_per_length, double length, double young, double second_moment,
+                                 double shear_modulus, double area, double shear_coefficient) {
+  return cantilever_tip_deflection(load_per_length, length, young, second_moment) +
+         load_per_length * length * length / (2 * shear_coefficient * shear_modulus * area);
+}
+
 double rectangle_second_moment(double width, double height) { return width * height * height * height / 12; }
 
 }  // namespace kit

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -11,6 +12,7 @@
 
 #include <kit/rigid_stepper.hpp>
 
+#include "chapter_run.hpp"
 #include "process.hpp"
 #include "rigid_kernels.hpp"
 
@@ -20,12 +22,7 @@ namespace {
 const std::string binary = KIT_CHAPTER_BINARY;
 
 json run_chapter(std::vector<std::string> args, int expected_exit = 0) {
-  kit::test::TempDir out("ch08");
-  args.insert(args.end(), {"--json", "--no-plot", "--out", out.path().string()});
-  const auto result = kit::test::run_process(binary, args);
-  INFO(result.err);
-  REQUIRE(result.exit_code == expected_exit);
-  return json::parse(result.out);
+  return kit::test::run_chapter_json(binary, std::move(args), "ch08", expected_exit);
 }
 
 const json& default_run() {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <kit/cloth_system.hpp>
+#include <kit/richardson.hpp>
 
 namespace kit {
 
@@ -39,13 +40,6 @@ struct Sag {
 };
 Sag hanging_sag(int n, Hanging hanging, ClothKernels kernels, long max_steps = 400000);
 
-/// Richardson's estimate from drops at N, 2N and 4N: the limit, the observed order p in
-/// error ∝ N^−p, and the remaining relative error of the finest.
-struct Convergence {
-  double limit = 0, order = 0, remaining = 0;
-  bool converges = false;  ///< the successive differences shrink (ratio > 1)
-};
-Convergence richardson(double coarse, double middle, double fine);
 /// "converges at order 1.03 to 12.48 mm, 0.8% away at N = 64", or that it does not; the limit
 /// shown times `unit` in `unit_name`.
 std::string describe(const Convergence& c, double unit, const std::string& unit_name);

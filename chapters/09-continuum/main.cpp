@@ -1,0 +1,137 @@
+// Chapter 9: continuum mechanics (lecture, "Mécanique des milieux continus"): ∇·σ + F_ext = η ü
+// with the Green strain ε = ½(∇u + ∇uᵀ + ∇uᵀ∇u), by linear triangles (ex 9.1 to 9.3). Why Green's
+// strain and not the small one; a cantilever against Euler–Bernoulli; the springs' "dépendance au
+// maillage"; what accuracy costs; and a spinning plate as OBJ meshes.
+#include <map>
+
+#include <fmt/format.h>
+
+#include <kit/chapter_app.hpp>
+#include <kit/continuum_figures.hpp>
+#include <kit/continuum_flags.hpp>
+#include <kit/continuum_report.hpp>
+#include <kit/fem_output.hpp>
+
+#include "fem_kernels.hpp"
+
+namespace {
+using kit::ChapterApp, kit::ContinuumKernels, kit::ContinuumSetup, kit::FemModel, kit::TipSolver;
+
+// 1. "σ = E ε": the material, in plane stress (errata 16: Lamé's λ and μ, not one E), and the
+//    cantilever's closed forms.
+void the_material(ChapterApp& app, const ContinuumSetup& s) {
+  kit::print_material(app.report(), s.material);
+}
+
+// 2. "ε = ½(∇u + ∇uᵀ + ∇uᵀ∇u)": one element turned rigidly, then a free plate spun at π rad/s for
+//    --t-end by each model, with --integrator, --dt, --resolution and --mesh.
+void green_strain(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
+  app.report().print("\n2. One element turned rigidly in its plane (forces relative to a 1% stretch's):\n");
+  const auto sweep = kit::turn_sweep(s.material, kernels);
+  kit::print_turns(app.report(), sweep);
+  app.figure(kit::turn_figure(sweep));
+  std::map<FemModel, kit::PlateRun> runs;
+  std::map<FemModel, std::vector<kit::Outline>> outlines;
+  const std::vector<double> times{0, s.t_end / 3, 2 * s.t_end / 3, s.t_end};
+  for (const FemModel model : {FemModel::linear, FemModel::stvk, FemModel::springs}) {
+    const auto keep_outline = [&](const kit::FemBody& body, int sample) {
+      if (model == FemModel::springs || sample % 30 != 0) return;  // 90 samples: t = 0, ⅓, ⅔, 1
+      auto& shape = outlines[model].emplace_back();
+      for (const int node : kit::boundary_loop(body.mesh())) shape.emplace_back(body.x(node, 0), body.x(node, 1));
+    };
+    app.report().attempt(kit::model_name(model), [&] {
+      runs[model] = kit::spin_plate(s.material, model, s.integrator, s.resolution, s.mesh, s.dt, s.t_end, kernels,
+                                    90, keep_outline);
+      if (runs[model].diverged) app.diverged(fmt::format("spinning plate ({})", kit::model_name(model)), "");
+    });
+  }
+  if (runs.empty()) return;
+  app.report().print(fmt::format("\nA free {0}×{0} plate spun at π rad/s for {1:g} s ({2} Euler):\n", s.resolution,
+                                 s.t_end, kit::integrator_name(s.integrator)));
+  kit::print_plate(app.report(), runs);
+  app.figure(kit::plate_figure(runs, kit::integrator_name(s.integrator)));
+  if (outlines.size() == 2) app.figure(kit::plate_shapes_figure(outlines, times));
+}
+
+// 3. Against a closed form: the cantilever under its own weight, each model at 20 to 20480 elements,
+//    against Euler–Bernoulli (and Timoshenko, who lets the beam shear).
+void cantilever(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
+  app.report().print("\n3. The cantilever's tip by mesh, static Newton:\n");
+  std::map<FemModel, kit::TipConvergence> models;
+  for (const FemModel model : {FemModel::linear, FemModel::stvk, FemModel::springs})
+    app.report().attempt(kit::model_name(model),
+                         [&] { models[model] = kit::cantilever_convergence(s.material, model, kernels); });
+  if (models.empty()) return;
+  kit::print_cantilever(app.report(), models, s.material);
+  app.figure(kit::cantilever_figure(models, s.material));
+}
+
+// 4. "Limitations: dépendance au maillage": a sheet stretched by the same load on regular and
+//    irregular meshes, by St Venant–Kirchhoff and by springs.
+void mesh_dependence(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
+  app.report().print("\n4. A 1 m sheet clamped on its left edge, pulled by 1e-3 E on its right edge: its stretch "
+                     "over the 1-D answer σL/E:\n");
+  std::map<FemModel, std::vector<kit::StretchRow>> rows;
+  for (const FemModel model : {FemModel::stvk, FemModel::springs})
+    app.report().attempt(kit::model_name(model),
+                         [&] { rows[model] = kit::stretch_sweep(s.material, model, {4, 8, 16, 32, 64}, kernels); });
+  if (rows.empty()) return;
+  kit::print_stretch(app.report(), rows);
+  app.figure(kit::stretch_figure(rows));
+}
+
+// 5. What accuracy costs: the cantilever's tip error against wall time, springs and linear FEM
+//    by Newton, St Venant–Kirchhoff by Newton and by explicit and implicit relaxation.
+void cost_of_accuracy(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
+  app.report().print("\n5. The cantilever's tip against wall time:\n");
+  const std::vector<std::pair<FemModel, TipSolver>> methods{
+      {FemModel::springs, TipSolver::newton}, {FemModel::linear, TipSolver::newton},
+      {FemModel::stvk, TipSolver::newton}, {FemModel::stvk, TipSolver::explicit_relaxation},
+      {FemModel::stvk, TipSolver::implicit_relaxation}};
+  std::vector<std::vector<kit::TipRun>> series;
+  for (const auto& [model, solver] : methods)
+    app.report().attempt(fmt::format("{}, {}", kit::model_name(model), kit::solver_name(solver)), [&] {
+      std::vector<kit::TipRun> list;
+      for (const int ny : {1, 2, 4, 8}) list.push_back(kit::run_cantilever(s.material, model, solver, ny, kernels));
+      series.push_back(list);
+    });
+  if (series.empty()) return;
+  kit::print_trade(app.report(), series);
+  app.figure(kit::trade_figure(series));
+}
+
+// 6. The scene: the plate by --model for --t-end, as --frames OBJ meshes (the first at t = 0).
+void scene(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
+  if (app.options().no_plot || s.frames == 0) return;
+  const auto dir = std::filesystem::path(app.options().out_dir) / "plate_meshes";
+  std::filesystem::create_directories(dir);
+  const auto write = [&](const kit::FemBody& body, int frame) {
+    kit::write_fem_obj(dir / fmt::format("plate-{:04d}.obj", frame), body);
+  };
+  const auto run = kit::spin_plate(s.material, s.model, s.integrator, s.resolution, s.mesh, s.dt, s.t_end, kernels,
+                                   int(s.frames) - 1, write);
+  app.report().say("scene", "\n6. {frames} OBJ meshes of the {model} plate in {dir}.\n",
+                   {{"frames", long(run.samples.size())}, {"model", kit::model_name(s.model)},
+                    {"dir", dir.string()}});
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  kit::ContinuumFlags flags;
+  ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR, "Chapter 9: continuum mechanics");
+  kit::add_continuum_flags(app, flags);
+  app.add_divergence_flag();
+  return app.run(argc, argv, [&] {
+    const ContinuumSetup setup = kit::continuum_setup(flags);
+    kit::announce_run(app.report(), "runs", "Chapter 9's runs", kit::estimate_continuum_runs(setup),
+                      kit::describe_continuum_run(flags), {.max_bytes = kit::machine_memory()});
+    const ContinuumKernels kernels = kit::student_continuum_kernels();
+    app.section("the material", [&] { the_material(app, setup); });
+    app.section("green strain", {"turned-element", "spinning-plate", "plate-shapes"},
+                [&] { green_strain(app, setup, kernels); });
+    app.section("the cantilever", {"cantilever"}, [&] { cantilever(app, setup, kernels); });
+    app.section("mesh dependence", {"mesh-dependence"}, [&] { mesh_dependence(app, setup, kernels); });
+    app.section("the cost of accuracy", {"cost-of-accuracy"}, [&] { cost_of_accuracy(app, setup, kernels); });
+    app.section("the scene", [&] { scene(app, setup, kernels); });
+  });
+}

@@ -1,0 +1,236 @@
+// Chapter 9 end to end: the cantilever against Euler–Bernoulli and Timoshenko, Green's strain
+// against the small strain under rigid turns, the spinning plate against its closed forms, the
+// springs' mesh dependence, the solvers' counts, the OBJ meshes, divergence and bad input; and in
+// process, the sheet's forces and stiffness against each other and a membrane hanging in 3-D.
+#include <fmt/format.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <kit/continuum_experiments.hpp>
+#include <kit/obj_mesh.hpp>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fem_kernels.hpp"
+#include "chapter_run.hpp"
+#include "process.hpp"
+
+using nlohmann::json;
+
+namespace {
+const std::string binary = KIT_CHAPTER_BINARY;
+
+json run_chapter(std::vector<std::string> args, int expected_exit = 0) {
+  return kit::test::run_chapter_json(binary, std::move(args), "ch09", expected_exit);
+}
+
+const json& default_run() {
+  static const json summary = run_chapter({});
+  return summary;
+}
+}  // namespace
+
+TEST_CASE("chapter 9: the cantilever converges to the 2-D answer at order 2, within 2% of Euler–Bernoulli") {
+  const json& s = default_run();
+  CHECK(double(s["material"]["tip"]) == Approx(1.4715).epsilon(1e-12));  // mm: 1.5 ρ g L⁴ / (E h²)
+  // Timoshenko adds the shear: (E / (3 κ G)) (h / L)² = 2.6 / 2.5 × 1% = 1.04% more.
+  CHECK(double(s["cantilever"]["above"]) == Approx(1.04).epsilon(1e-9));
+  for (const char* model : {"linear", "stvk"}) {
+    INFO(model);
+    const json& c = s["cantilever"][model];
+    CHECK(std::abs(double(c["finest"])) < 2.0);  // % from Euler–Bernoulli at 20480 elements
+    CHECK(double(c["vs_eb"]) > 0.5);             // the 2-D beam shears: it sags more than EB
+    CHECK(double(c["vs_eb"]) < 1.04);            // but less than Timoshenko (the clamp holds it)
+    CHECK(std::abs(double(c["vs_timoshenko"])) < 0.5);
+    CHECK(double(c["order"]) > 1.6);  // linear triangles: error ∝ h²
+    CHECK(double(c["order"]) < 2.2);
+  }
+  // From below: every mesh but the finest is too stiff, and the error shrinks with each refinement.
+  const json& meshes = s["cantilever"]["meshes"];
+  for (std::size_t k = 1; k < meshes.size(); ++k) CHECK(double(meshes[k]["stvk"]) > double(meshes[k - 1]["stvk"]));
+  // At 1.5 mm of sag on 1 m the geometric nonlinearity is below 1e-5 of the tip.
+  for (const auto& row : meshes) CHECK(std::abs(double(row["stvk"]) - double(row["linear"])) < 1e-5);
+  // The springs settle 14 to 16% short, however fine the mesh.
+  for (std::size_t k = 3; k < meshes.size(); ++k) {
+    CHECK(double(meshes[k]["springs"]) < -0.14);
+    CHECK(double(meshes[k]["springs"]) > -0.16);
+  }
+}
+
+TEST_CASE("chapter 9: a rigid turn has no Green strain and no StVK force; the small strain is √2 (1 − cos θ)") {
+  const json& rows = default_run()["turns"]["rows"];
+  REQUIRE(rows.size() == 37);
+  for (const auto& r : rows) {
+    const double theta = double(r["degrees"]) * M_PI / 180;
+    INFO("turn " << double(r["degrees"]) << "°");
+    CHECK(double(r["green_strain"]) < 1e-15);
+    CHECK(double(r["stvk_force"]) < 1e-13);
+    // ε = ½(G + Gᵀ) − I = (cos θ − 1) I for G the rotation.
+    CHECK(double(r["cauchy_strain"]) == Approx(std::sqrt(2.0) * (1 - std::cos(theta))).margin(1e-15));
+    if (double(r["degrees"]) >= 30) CHECK(double(r["linear_force"]) > 10);  // ten times a 1% stretch's
+  }
+}
+
+TEST_CASE("chapter 9: spun, St Venant–Kirchhoff turns the plate rigidly; the linear plate flies apart as closed form") {
+  const json& plate = default_run()["plate"];
+  for (const char* model : {"stvk", "springs"}) {
+    INFO(model);
+    CHECK(double(plate[model]["angle"]) == Approx(M_PI).epsilon(1e-5));  // ωt = π rad after 1 s
+    CHECK(double(plate[model]["strain"]) < 1e-5);                        // ρω²R²/E ≈ 6e-7
+    CHECK(std::abs(double(plate[model]["energy_change"])) < 1e-6);       // symplectic Euler
+    CHECK_FALSE(bool(plate[model]["diverged"]));
+  }
+  // The linear model's infinitesimal rotation v0 = ω × (X − c) is a zero-energy mode: K v0 = 0,
+  // so x = X + t v0 feels no force. F = I + ωt J, a turn by atan(ωt) and a growth by √(1 + ω²t²):
+  // E = ½ ω²t² I, |E| = ω²t²/√2 at t = 1 s.
+  CHECK(double(plate["linear"]["angle"]) == Approx(std::atan(M_PI)).epsilon(1e-9));
+  CHECK(double(plate["linear"]["strain"]) == Approx(M_PI * M_PI / std::sqrt(2.0)).epsilon(1e-9));
+  CHECK(std::abs(double(plate["linear"]["energy_change"])) < 1e-12);
+}
+
+TEST_CASE("chapter 9: FEM's stretch does not care for the triangulation, the springs' does") {
+  std::map<std::string, std::vector<json>> rows;
+  for (const auto& r : default_run()["stretch"]) rows[std::string(r["model"])].push_back(r);
+  REQUIRE(rows["stvk"].size() == 5);
+  REQUIRE(rows["springs"].size() == 5);
+  for (const auto& r : rows["stvk"]) {
+    INFO("n = " << int(r["n"]));
+    CHECK(double(r["difference"]) < 0.01 * 4 / double(r["n"]));  // a bound that halves with each refinement
+    CHECK(double(r["regular"]) > 0.98);  // the clamp holds the sheet from narrowing: a little stiffer than 1-D
+    CHECK(double(r["regular"]) < 0.99);
+  }
+  CHECK(double(rows["stvk"].back()["difference"]) < double(rows["stvk"].front()["difference"]) / 20);
+  for (const auto& r : rows["springs"]) CHECK(double(r["difference"]) > 0.05);
+  CHECK(double(rows["springs"].back()["difference"]) > double(rows["springs"][1]["difference"]));
+}
+
+TEST_CASE("chapter 9: every StVK solver finds the same tip; what each one counts") {
+  std::map<std::string, std::vector<json>> by;
+  for (const auto& r : default_run()["trade"])
+    by[std::string(r["model"]) + "/" + std::string(r["solver"])].push_back(r);
+  const auto& newton = by["stvk/static Newton"];
+  const auto& explicit_runs = by["stvk/explicit relaxation"];
+  const auto& implicit_runs = by["stvk/implicit relaxation"];
+  REQUIRE(newton.size() == 4);
+  REQUIRE(explicit_runs.size() == 4);
+  REQUIRE(implicit_runs.size() == 4);
+  for (std::size_t k = 0; k < 4; ++k) {
+    INFO("elements " << long(newton[k]["elements"]));
+    // Damped at 2ω1 for 20/ω1: what is left of the start is below e^−20 · 21 ≈ 4e-8.
+    CHECK(double(explicit_runs[k]["error"]) == Approx(double(newton[k]["error"])).margin(1e-6));
+    CHECK(double(implicit_runs[k]["error"]) == Approx(double(newton[k]["error"])).margin(1e-6));
+    CHECK(long(newton[k]["steps"]) <= 5);
+    CHECK(long(implicit_runs[k]["steps"]) == 40);
+    CHECK(long(implicit_runs[k]["iterations"]) > 0);
+  }
+  // The explicit step shrinks with the cell: twice the cells through the height, twice the steps.
+  for (std::size_t k = 2; k < 4; ++k)
+    CHECK(double(explicit_runs[k]["steps"]) / double(explicit_runs[k - 1]["steps"]) == Approx(2).epsilon(0.02));
+  CHECK(long(by["linear/static Newton"][0]["steps"]) <= 2);  // one solve, one check of round-off
+}
+
+TEST_CASE("chapter 9: implicit Euler damps the spin; explicit Euler past its limit diverges, a reported result") {
+  const json implicit = run_chapter({"--integrator", "implicit", "--dt", "0.01", "--t-end", "1"});
+  const json& stvk = implicit["plate"]["stvk"];
+  CHECK(long(stvk["steps"]) == 100);
+  CHECK(double(stvk["energy_change"]) < -0.5);  // ω² h a step: most of the spin's energy is gone
+  CHECK(double(stvk["angle"]) < 2.0);
+  CHECK(double(stvk["strain"]) < 1e-4);  // but it stays a plate
+  const json diverged = run_chapter({"--integrator", "explicit", "--dt", "1e-4", "--t-end", "0.1"});
+  REQUIRE(diverged.contains("divergences"));
+  CHECK(bool(diverged["plate"]["stvk"]["diverged"]));
+  run_chapter({"--integrator", "explicit", "--dt", "1e-4", "--t-end", "0.1", "--fail-on-divergence"}, 3);
+}
+
+TEST_CASE("chapter 9: --frames writes one OBJ mesh a frame, the first at rest, every one readable") {
+  kit::test::TempDir out("ch09-frames");
+  const auto result = kit::test::run_process(
+      binary, {"--json", "--frames", "4", "--resolution", "4", "--format", "png", "--out", out.path().string()});
+  INFO(result.err);
+  REQUIRE(result.exit_code == 0);
+  const json s = json::parse(result.out);
+  for (const char* figure :
+       {"turned-element", "spinning-plate", "plate-shapes", "cantilever", "mesh-dependence", "cost-of-accuracy"}) {
+    INFO(figure);
+    CHECK(s["figures"].contains(figure));
+  }
+  CHECK(long(s["scene"]["frames"]) == 4);
+  for (int frame = 0; frame < 4; ++frame) {
+    const auto mesh = kit::read_obj(out.path() / "plate_meshes" / fmt::format("plate-{:04d}.obj", frame));
+    CHECK(mesh.positions.size() == 25);  // 5 × 5 nodes
+    CHECK(mesh.faces.size() == 32);
+    if (frame == 0) CHECK(mesh.positions[24].x() == Approx(0.5));  // the far corner at rest
+  }
+}
+
+TEST_CASE("chapter 9 (in process): each model's stiffness is the derivative of its forces; a membrane hangs in 3-D") {
+  const kit::ContinuumKernels kernels = kit::student_continuum_kernels();
+  for (const kit::FemModel model : {kit::FemModel::linear, kit::FemModel::stvk, kit::FemModel::springs}) {
+    INFO(kit::model_name(model));
+    kit::FemBody body(kit::continuum_mesh(0.3, 0.2, 3, 2, kit::MeshKind::irregular), {}, model, kernels);
+    for (long i = 0; i < body.nodes(); ++i) {  // a smooth stretch, shear and lift of the rest shape
+      const double x = body.x(i, 0), y = body.x(i, 1);
+      body.x.row(i) << x * 1.05 + 0.02 * y, y * 0.97, model == kit::FemModel::linear ? 0.0 : 0.01 * x * y;
+    }
+    kit::SparseMatrix K;
+    body.stiffness(K);
+    const Eigen::MatrixXd dense(K);
+    kit::NodeArray f0, plus, minus;
+    body.forces(f0);
+    CHECK(f0.colwise().sum().norm() < 1e-9 * f0.norm());  // no loads: the internal forces cancel
+    const double delta = 1e-7;
+    double worst = 0;
+    for (long i = 0; i < body.nodes(); ++i)
+      for (int axis = 0; axis < 3; ++axis) {
+        const double keep = body.x(i, axis);
+        body.x(i, axis) = keep + delta;
+        body.forces(plus);
+        body.x(i, axis) = keep - delta;
+        body.forces(minus);
+        body.x(i, axis) = keep;
+        const Eigen::VectorXd column = kit::flatten(plus - minus) / (2 * delta);
+        worst = std::max(worst, (column - dense.col(3 * i + axis)).cwiseAbs().maxCoeff());
+      }
+    CHECK(worst < 1e-5 * dense.cwiseAbs().maxCoeff());
+  }
+  // A St Venant–Kirchhoff sheet held by its top corners, free in 3-D, pushed out of its plane,
+  // let go under gravity (along −y, in its plane) with damping: it sags and comes to rest.
+  kit::FemBody sheet(kit::continuum_mesh(0.4, 0.4, 4, 4, kit::MeshKind::regular), {1e6, 0.3, 200, 0.001},
+                     kit::FemModel::stvk, kernels);
+  for (long i = 0; i < sheet.nodes(); ++i) {
+    if (sheet.x(i, 1) == 0.4 && (sheet.x(i, 0) == 0 || sheet.x(i, 0) == 0.4)) sheet.pin(i);
+    sheet.v(i, 2) = 0.1 * std::sin(M_PI * sheet.x(i, 0) / 0.4);
+  }
+  kit::add_weight(sheet);
+  long unconverged = 0;
+  for (int step = 0; step < 800; ++step) unconverged += !kit::implicit_step(sheet, 5e-3, 5.0).converged;
+  CHECK(unconverged == 0);
+  CHECK(sheet.x.allFinite());
+  CHECK(sheet.v.norm() < 1e-3);                    // at rest, or nearly
+  CHECK(sheet.x.col(1).minCoeff() < -1e-4);        // the bottom edge has sagged below y = 0
+  CHECK(std::abs(sheet.x.col(2).maxCoeff()) > 0);  // it moved out of its plane and back
+  CHECK(sheet.largest_green_strain() < 0.05);
+}
+
+TEST_CASE("chapter 9 answers bad input with exit 2, a message naming the flag, and no file") {
+  kit::test::expect_usage_errors(binary, {{{"--young", "0"}, "--young"},
+                                          {{"--young", "1e13"}, "--young"},
+                                          {{"--young", "nan"}, "--young"},
+                                          {{"--poisson", "0.5"}, "--poisson"},
+                                          {{"--poisson", "-0.1"}, "--poisson"},
+                                          {{"--density", "0"}, "--density"},
+                                          {{"--resolution", "1"}, "--resolution"},
+                                          {{"--resolution", "129"}, "--resolution"},
+                                          {{"--mesh", "delaunay"}, "--mesh"},
+                                          {{"--model", "neo-hookean"}, "--model"},
+                                          {{"--integrator", "rk4"}, "--integrator"},
+                                          {{"--dt", "-1"}, "--dt"},
+                                          {{"--dt", "0.2"}, "--dt"},
+                                          {{"--t-end", "0"}, "--t-end"},
+                                          {{"--dt", "0.05", "--t-end", "0.01"}, "--dt"},
+                                          {{"--frames", "-1"}, "--frames"},
+                                          {{"--young", "1e12", "--t-end", "100"}, "over the limit"}});
+}
