@@ -157,7 +157,9 @@ double FemBody::elastic_energy() const {
     const Matrix32 F =
         kernels_.element.deformation_gradient(node3(x, tri[0]), node3(x, tri[1]), node3(x, tri[2]), rest_[t].inverse);
     if (model_ == FemModel::stvk) {
-      energy += stvk_energy(F, rest_[t].volume, lame_);
+      // W = V (μ E:E + ½λ tr(E)²), with E from the student's ex 9.1.
+      const Matrix2 E = kernels_.element.green_strain(F);
+      energy += rest_[t].volume * (lame_.mu * E.squaredNorm() + 0.5 * lame_.lambda * E.trace() * E.trace());
     } else {
       const Matrix2 strain = cauchy_strain(F);
       const Matrix2 stress = lame_.lambda * strain.trace() * Matrix2::Identity() + 2 * lame_.mu * strain;

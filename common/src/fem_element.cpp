@@ -23,12 +23,6 @@ RestTriangle rest_triangle(const Eigen::Vector2d& X0, const Eigen::Vector2d& X1,
   return {edges.inverse(), 0.5 * twice_area * thickness};
 }
 
-double stvk_energy(const Matrix32& F, double rest_volume, const Lame& lame) {
-  const Matrix2 E = 0.5 * (F.transpose() * F - Matrix2::Identity());
-  const double trace = E.trace();
-  return rest_volume * (lame.mu * E.squaredNorm() + 0.5 * lame.lambda * trace * trace);
-}
-
 Matrix2 cauchy_strain(const Matrix32& F) {
   const Matrix2 G = F.topRows<2>();
   return 0.5 * (G + G.transpose()) - Matrix2::Identity();

@@ -40,7 +40,7 @@ TEST_CASE("ex 9.1: a rigid motion in space has no Green strain, to round-off",
     const auto e = random_element(rng, 0.0);  // F = the first two columns of a rotation
     const Matrix2 E = kit::green_strain(e.F);
     INFO("trial " << trial << ": F =\n" << e.F << "\nE =\n" << E);
-    CHECK(E.cwiseAbs().maxCoeff() <= 1e-15);
+    CHECK(E.cwiseAbs().maxCoeff() <= 1e-14);  // E's entries are O(1) sums: a few ulps
   }
   // A quarter turn in the plane, which the small strain reads as a 100% compression (ε = −I).
   Matrix32 quarter;

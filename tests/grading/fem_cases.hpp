@@ -2,7 +2,7 @@
 // Random elements shared by chapter 9's graded tests: a well-shaped rest triangle of any size and
 // orientation in the plane, a deformation of it in space (a rotation, a stretch, a shear and a
 // translation), and Lamé's parameters over four decades, all from the seeded generator of
-// cases.hpp. Also the element's forces by central differences of the kit's energy, the truth
+// cases.hpp. Also the element's forces by central differences of its energy, the truth
 // the forces are graded against.
 #include <array>
 #include <cmath>
@@ -78,9 +78,11 @@ inline Matrix32 gradient_of(const std::array<FemVector3, 3>& x, const Matrix2& r
   return Ds * rest_inverse;
 }
 
-/// The element's energy [J] with its nodes at x.
+/// The element's St Venant–Kirchhoff energy V (μ E:E + ½λ tr(E)²) [J] with its nodes at x.
 inline double energy_at(const std::array<FemVector3, 3>& x, const RandomElement& e) {
-  return stvk_energy(gradient_of(x, e.rest.inverse), e.rest.volume, e.lame);
+  const Matrix32 F = gradient_of(x, e.rest.inverse);
+  const Matrix2 E = 0.5 * (F.transpose() * F - Matrix2::Identity());
+  return e.rest.volume * (e.lame.mu * E.squaredNorm() + 0.5 * e.lame.lambda * E.trace() * E.trace());
 }
 
 /// −∂W/∂x by central differences of the energy, each coordinate moved by ±δ with δ = 1e-6 of

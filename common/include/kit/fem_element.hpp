@@ -13,8 +13,9 @@
 // the unknowns node by node: (x0, y0, z0, x1, ...).
 //
 // The student writes the element (ex 9.1 to 9.3); the kit calls it through FemKernels and keeps
-// here what is not an exercise: the rest shape, the energy, and the linear (Cauchy) model that
-// the chapter shows failing under rotation.
+// here what is not an exercise: the rest shape and the linear (Cauchy) model that the chapter
+// shows failing under rotation. The energy is not offered here: ex 9.2 is graded against its
+// derivative, and a library energy would let the forces come from differences of it.
 #include <Eigen/Core>
 
 #include <kit/fem_material.hpp>
@@ -61,9 +62,6 @@ struct FemKernels {
   StvkForces forces = nullptr;                         ///< ex 9.2
   StvkStiffness stiffness = nullptr;                   ///< ex 9.3
 };
-
-/// St Venant–Kirchhoff's stored energy of the element, V (μ E:E + ½λ tr(E)²) [J], with E from F.
-double stvk_energy(const Matrix32& F, double rest_volume, const Lame& lame);
 
 /// The linear (small-strain) model of a plate in its plane: the Cauchy strain ε = ½(G + Gᵀ) − I
 /// of the in-plane block G (the top 2×2 of F). Zero for a translation, not for a rotation: a turn
