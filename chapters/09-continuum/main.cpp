@@ -26,10 +26,12 @@ void the_material(ChapterApp& app, const ContinuumSetup& s) {
 // 2. "ε = ½(∇u + ∇uᵀ + ∇uᵀ∇u)": one element turned rigidly, then a free plate spun at π rad/s for
 //    --t-end by each model, with --integrator, --dt, --resolution and --mesh.
 void green_strain(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
-  app.report().print("\n2. One element turned rigidly in its plane (forces relative to a 1% stretch's):\n");
-  const auto sweep = kit::turn_sweep(s.material, kernels);
-  kit::print_turns(app.report(), sweep);
-  app.figure(kit::turn_figure(sweep));
+  app.report().attempt("the rigid turn", [&] {
+    const auto sweep = kit::turn_sweep(s.material, kernels);
+    app.report().print("\n2. One element turned rigidly in its plane (forces relative to a 1% stretch's):\n");
+    kit::print_turns(app.report(), sweep);
+    app.figure(kit::turn_figure(sweep));
+  });
   std::map<FemModel, kit::PlateRun> runs;
   std::map<FemModel, std::vector<kit::Outline>> outlines;
   const std::vector<double> times{0, s.t_end / 3, 2 * s.t_end / 3, s.t_end};

@@ -140,7 +140,9 @@ TipConvergence cantilever_convergence(const FemMaterial& material, FemModel mode
   const std::size_t n = c.runs.size();
   if (n < 4)
     throw std::invalid_argument(fmt::format("cantilever_convergence: finest {} (expected at least 8)", finest));
-  c.richardson = richardson(c.runs[n - 3].tip, c.runs[n - 2].tip, c.runs[n - 1].tip);
+  if (c.runs[n - 3].done && c.runs[n - 2].done && c.runs[n - 1].done)
+    c.richardson = richardson(c.runs[n - 3].tip, c.runs[n - 2].tip, c.runs[n - 1].tip);
+  if (!c.richardson.converges) return c;  // no limit, no order
   // Least squares of log|tip − limit| = a − p log(ny) from ny = 2 (one cell through the height
   // is not yet in the asymptotic range) to the next-to-finest (the finest sits where Richardson's
   // estimate puts it).

@@ -63,16 +63,17 @@ Figure cantilever_figure(const std::map<FemModel, TipConvergence>& models, const
   for (const auto& [model, c] : models) {
     std::vector<double> n, ratio, distance;
     for (const auto& r : c.runs) {
+      if (!r.done) continue;  // Newton failed: no tip to show
       n.push_back(double(r.elements));
       ratio.push_back(r.tip / euler_bernoulli);
       distance.push_back(shown((r.tip - c.richardson.limit) / c.richardson.limit));
     }
-    last = n.back();
+    if (!n.empty()) last = std::max(last, n.back());
     // At 1.5 µm of sag the linear and St Venant–Kirchhoff tips agree to 1e-5: the linear curve is
     // dashed over open circles so that neither hides the other.
     const std::string look = model_style(model) + (model == FemModel::linear ? " lw 2 dt 2 pt 6 ps 1.8" : " lw 2 pt 7");
     tip.line(model_title(model), n, ratio, look).with = "linespoints";
-    if (!c.richardson.converges) continue;  // no limit to measure from
+    if (!c.richardson.converges || n.size() < 2) continue;  // no limit to measure from
     // The finest mesh sits on Richardson's limit by construction: left out of the right panel.
     n.pop_back();
     distance.pop_back();

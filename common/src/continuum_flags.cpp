@@ -1,5 +1,6 @@
 #include <kit/continuum_flags.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -56,11 +57,14 @@ double scene_step(const ContinuumSetup& s) {
 }
 
 RunEstimate estimate_continuum_runs(const ContinuumSetup& s) {
-  // In element steps: the fixed experiments take about 7e7 (the explicit relaxation of the finest
-  // cantilever, 2.8e4 steps of 1280 elements, half of it); the scene takes its
-  // steps times its 2 n² elements, an implicit step about 40 PCG products of one element each.
+  // In element steps (an element's forces, ~35 ns): the fixed experiments take about 7e7 (the
+  // explicit relaxation of the finest cantilever, 2.8e4 steps of 1280 elements, half of it); the
+  // scene takes its steps times its 2 n² elements times an element step's share of each step.
+  // Implicit: the stiffness (~25 element steps), and the PCG's iterations, about 5.4 n (34 at
+  // n = 8, 383 at n = 71, bench_continuum) at ~0.5 element steps each.
   const double elements = 2.0 * s.resolution * s.resolution;
-  const double per_step = s.integrator == TimeIntegrator::implicit_euler ? 40 : 1;
+  const double iterations = std::max(35.0, 5.4 * s.resolution);
+  const double per_step = s.integrator == TimeIntegrator::implicit_euler ? 1 + 25 + 0.5 * iterations : 1;
   RunEstimate e;
   e.steps = 7e7 + std::ceil(s.t_end / scene_step(s)) * elements * per_step;
   e.unit = "element steps";

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <kit/continuum_report.hpp>
 
@@ -31,7 +32,11 @@ void print_cantilever(Report& report, const std::map<FemModel, TipConvergence>& 
   const auto& first = models.begin()->second.runs;
   for (std::size_t k = 0; k < first.size(); ++k) {
     std::vector<ReportValue> row{long(first[k].ny), first[k].elements};
-    for (const auto& [model, c] : models) row.push_back(c.runs[k].error);
+    for (const auto& [model, c] : models) {
+      ReportValue error;  // "-" where Newton failed
+      if (c.runs[k].done) error = c.runs[k].error;
+      row.push_back(error);
+    }
     table.row(row);
   }
   table.print();
@@ -39,8 +44,18 @@ void print_cantilever(Report& report, const std::map<FemModel, TipConvergence>& 
              "Timoshenko's tip, shear included: {timoshenko:.5g} mm, {above:+.2f}% from "
              "Euler–Bernoulli's.\n",
              {{"timoshenko", 1e3 * timoshenko}, {"above", 100 * (timoshenko / euler_bernoulli - 1)}});
+  const double sag = euler_bernoulli / cantilever_length;
+  if (sag > 0.01)
+    report.say("cantilever", "Euler–Bernoulli's tip is {sag:.3g} of the length: past small deflections, where it and "
+               "the linear model hold; St Venant–Kirchhoff's answer is the large-rotation one.\n", {{"sag", sag}});
   for (const auto& [model, c] : models) {
     const std::string section = fmt::format("cantilever/{}", model_name(model));
+    const auto failed = std::find_if(c.runs.begin(), c.runs.end(), [](const TipRun& r) { return !r.done; });
+    if (failed != c.runs.end()) {
+      report.say(section, "{model}: Newton's method failed at {cells} cells through the height: {why}.\n",
+                 {{"model", model_name(model)}, {"cells", long(failed->ny)}, {"why", failed->failure}});
+      continue;
+    }
     if (!c.richardson.converges) {
       report.say(
           section,

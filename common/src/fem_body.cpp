@@ -76,6 +76,8 @@ FemBody::FemBody(TriangleMesh mesh, const FemMaterial& material, FemModel model,
     for (const int node : tri) masses[node] += material.density * rest_.back().volume / 3;
   }
   if (model_ == FemModel::springs) springs_ = edge_springs(mesh_, material_);
+  if (model_ == FemModel::linear)
+    for (const auto& rest : rest_) linear_stiffness_.push_back(linear_stiffness(rest.inverse, rest.volume, lame_));
 }
 
 void FemBody::hold_in_plane() {
@@ -133,7 +135,7 @@ void FemBody::stiffness(SparseMatrix& out) const {
                                                                  rest_[t].inverse);
         K = kernels_.element.stiffness(F, rest_[t].inverse, rest_[t].volume, lame_);
       } else {
-        K = linear_stiffness(rest_[t].inverse, rest_[t].volume, lame_);
+        K = linear_stiffness_[t];
       }
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) add_block(tri[a], tri[b], K.block<3, 3>(3 * a, 3 * b));
@@ -197,7 +199,17 @@ std::vector<int> free_coordinates(const FemBody& body) {
 
 }  // namespace
 
-StaticSolve solve_static(FemBody& body, int max_iterations, double tolerance) {
+namespace {
+
+/// Newton's method at the body's present loads, from its present positions.
+/// The rest positions in the plane, one row a node [m].
+Eigen::MatrixX2d rest_positions(const FemBody& body) {
+  Eigen::MatrixX2d rest(body.nodes(), 2);
+  for (long i = 0; i < body.nodes(); ++i) rest.row(i) = body.mesh().nodes[i].transpose();
+  return rest;
+}
+
+StaticSolve newton(FemBody& body, int max_iterations, double tolerance) {
   const std::vector<int> free = free_coordinates(body);
   std::vector<int> slot(3 * body.nodes(), -1);
   for (std::size_t k = 0; k < free.size(); ++k) slot[free[k]] = static_cast<int>(k);
@@ -206,15 +218,19 @@ StaticSolve solve_static(FemBody& body, int max_iterations, double tolerance) {
   NodeArray f;
   SparseMatrix K;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+  double last_step = 0;  // the largest coordinate change of the last Newton step [m]
   for (;;) {
     body.forces(f);
     Eigen::VectorXd rhs(free.size());
     for (std::size_t k = 0; k < free.size(); ++k) rhs[k] = f(free[k] / 3, free[k] % 3);
-    const double previous = out.residual;
     out.residual = rhs.norm() / load;
-    // Converged, or at round-off: the element forces that cancel at equilibrium are up to 1e4
-    // times the loads (a cantilever's root), so their sum cannot fall much below 1e-12 of them.
-    if (out.residual <= tolerance || (out.iterations > 1 && out.residual < 1e-4 && out.residual > 0.5 * previous)) {
+    // Converged, or at round-off. The element forces that cancel at equilibrium are up to 1e4
+    // times the loads (a cantilever's root) and are computed from absolute positions, so their sum
+    // has a floor that rises as the displacement shrinks against the body's size (a stiff
+    // material). There the steps stop changing anything: the last moved no node by more than
+    // 1e-9 of the largest displacement.
+    const double displacement = (body.x.leftCols<2>() - rest_positions(body)).cwiseAbs().maxCoeff();
+    if (out.residual <= tolerance || (out.iterations > 1 && last_step <= 1e-9 * displacement)) {
       out.converged = true;
       return out;
     }
@@ -241,8 +257,32 @@ StaticSolve solve_static(FemBody& body, int max_iterations, double tolerance) {
       return out;
     }
     for (std::size_t k = 0; k < free.size(); ++k) body.x(free[k] / 3, free[k] % 3) += dx[k];
+    last_step = dx.cwiseAbs().maxCoeff();
     ++out.iterations;
   }
+}
+
+}  // namespace
+
+StaticSolve solve_static(FemBody& body, int max_iterations, double tolerance) {
+  const NodeArray start = body.x, loads = body.loads;
+  StaticSolve out;
+  int spent = 0;
+  for (int increments = 1; increments <= 64; increments *= 4) {
+    body.x = start;
+    for (int k = 1; k <= increments; ++k) {
+      body.loads = loads * (static_cast<double>(k) / increments);
+      out = newton(body, max_iterations, tolerance);
+      spent += out.iterations;
+      if (!out.converged) break;
+    }
+    body.loads = loads;
+    out.iterations = spent;
+    out.increments = increments;
+    if (out.converged) return out;
+  }
+  out.failure += " (the load in up to 64 increments)";
+  return out;
 }
 
 namespace {

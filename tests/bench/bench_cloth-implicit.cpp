@@ -47,6 +47,7 @@
 #include <kit/table.hpp>
 
 #include "bandwidth.hpp"
+#include "machine_note.hpp"
 #include "bullet_cloth.hpp"
 #include "cloth_assembly.hpp"
 #include "cloth_jacobian.hpp"
@@ -328,15 +329,7 @@ const char* verdict(bool met) { return met ? "met" : "NOT met"; }
 
 int main() {
   const kit::Stopwatch total;  // wall time of the whole benchmark
-  double stream = 0, array_bytes = 0;
-  const double bandwidth = kit_bench::capped_triad_bandwidth(stream, array_bytes);
-  fmt::print(
-      "Memory bandwidth, one core: {:.1f} GB/s moved by a triad over three arrays of {:.0f} MB ({:.1f} GB/s as\n"
-      "STREAM counts it); the last-level cache sysconf reports: {:.0f} MB. Load average at the start: {:.2f} on\n"
-      "{} cores. Times below are this thread's CPU time (fastest of several samples where repeated), which\n"
-      "other work on the cores does not count, though the caches it shares still slow it.\n\n",
-      bandwidth / 1e9, array_bytes / 1e6, stream / 1e9, kit_bench::last_level_cache() / 1e6, load_average(),
-      sysconf(_SC_NPROCESSORS_ONLN));
+  const double bandwidth = kit_bench::print_machine_note("the fastest of several samples where repeated");
 
   const kit::ClothScene scene = make_scene();
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);

@@ -54,6 +54,13 @@ CASES = [  # (chapter, flags, expected exit code)
     ("08-rigid-bodies", ["--integrator", "euler-R", "--dt", "0.1", "--t-end", "10", "--frames", "5"], 0),
     ("08-rigid-bodies", ["--omega0", "1e4,1e4,1e4", "--t-end", "1", "--frames", "3"], 0),
     ("08-rigid-bodies", ["--dt", "1e-9", "--t-end", "1000"], 2),
+    # A beam that would sag 1.5e5 times its length: Newton fails even in 64 load steps, and says so.
+    ("09-continuum", ["--young", "1e3", "--density", "1e5", "--frames", "3"], 0),
+    ("09-continuum", ["--young", "1e12", "--t-end", "0.01", "--frames", "3"], 0),
+    ("09-continuum", ["--integrator", "explicit", "--dt", "0.1", "--resolution", "128", "--t-end", "100"], 0),
+    ("09-continuum", ["--model", "linear", "--integrator", "implicit", "--mesh", "irregular", "--resolution", "2",
+                      "--frames", "2"], 0),
+    ("09-continuum", ["--resolution", "128", "--integrator", "implicit", "--t-end", "100"], 2),
 ]
 
 

@@ -28,8 +28,8 @@ sys.path.insert(0, str(ROOT / "tools"))
 import exercises  # noqa: E402
 
 CHAPTERS = ["01-free-fall", "02-spring-stability", "03-rk2", "04-adaptive-rk", "05-sprites", "06-cloth-explicit",
-            "07-cloth-implicit", "08-rigid-bodies"]
-FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1", "5.1", "6.1", "6.2", "7.1", "8.1", "8.3"}
+            "07-cloth-implicit", "08-rigid-bodies", "09-continuum"]
+FIRST = {"1.1", "2.1", "2.4", "3.1", "4.1", "5.1", "6.1", "6.2", "7.1", "8.1", "8.3", "9.1"}
 
 
 def write_tree(path, solved):
@@ -131,6 +131,14 @@ def expectations(tree):
                  lambda s: set(s["integrators"]) == {"euler-R", "euler-R-polar", "midpoint", "rk4"}
                  and s["integrators"]["euler-R"]["flips"] == 8),
             ],
+            "09-continuum": [
+                ("the linear and springs plates on the student's F (ex 9.1); St Venant–Kirchhoff waits for ex 9.2",
+                 lambda s: set(s["plate"]) == {"linear", "springs"}
+                 and near(s["plate"]["linear"]["angle"], math.atan(math.pi), 1e-6)),
+                ("the cantilever by linear FEM (ex 9.1) and springs (ex 6.1, 7.1) at order 2",
+                 lambda s: {"linear", "springs"} <= set(s["cantilever"]) and "stvk" not in s["cantilever"]
+                 and near(s["cantilever"]["linear"]["order"], 1.8, 0.2)),
+            ],
         }
     if tree == "none":
         return {
@@ -149,6 +157,8 @@ def expectations(tree):
             "08-rigid-bodies": [("the kit's midpoint and RK4 flip 6 times, the drops run",
                                  lambda s: set(s["integrators"]) == {"midpoint", "rk4"}
                                  and s["integrators"]["rk4"]["flips"] == 6 and s["drop"]["bounces"] > 0)],
+            "09-continuum": [("the material and Euler–Bernoulli's tip, nothing that needs F",
+                              lambda s: near(s["material"]["tip"], 1.4715, 1e-9) and "plate" not in s)],
         }
     return {
         "01-free-fall": [
@@ -186,6 +196,11 @@ def expectations(tree):
         "08-rigid-bodies": [
             ("without ω from L (ex 8.3) the lecture's four wait, even with 8.2 and 8.4 written",
              lambda s: set(s["integrators"]) == {"midpoint", "rk4"} and "omega" not in s),
+        ],
+        "09-continuum": [
+            ("without F (ex 9.1) every model waits, even with 9.2 and 9.3 written",
+             lambda s: "plate" not in s and "cantilever" not in s and "turns" not in s
+             and near(s["material"]["tip"], 1.4715, 1e-9)),
         ],
     }
 

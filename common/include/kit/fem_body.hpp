@@ -81,6 +81,7 @@ class FemBody {
   Lame lame_;
   std::vector<RestTriangle> rest_;
   Springs springs_;  ///< the springs model's edges
+  std::vector<Matrix9> linear_stiffness_;  ///< the linear model's, per element: the same at every state
 };
 
 /// Gravity g [m/s²] along −y on every node's mass.
@@ -88,11 +89,14 @@ void add_weight(FemBody& body, double gravity = 9.81);
 
 /// The body's rest state under its loads, by Newton's method on the free coordinates with a
 /// sparse direct solver (LDLᵀ): each step solves −K Δx = f. The linear model converges in one
-/// step. Converged when |f| on the free coordinates ≤ tolerance × |loads|, or when a step no
-/// longer halves it once it is below 1e-4 (the round-off floor of the forces' sum); fails on a
-/// step that is not finite, or a singular K.
+/// step. Converged when |f| on the free coordinates ≤ tolerance × |loads|, or at round-off: when
+/// a step moved no coordinate by more than 1e-9 of the largest in-plane displacement; fails on a
+/// step that is not finite, or a singular K. When the whole load fails (a large deflection, far
+/// from the start), it is applied again from rest in 4, 16 and then 64 equal increments, each
+/// solved from the last: a continuation along the load.
 struct StaticSolve {
-  int iterations = 0;
+  int iterations = 0;   ///< Newton steps, over every increment
+  int increments = 1;   ///< the load steps of the attempt that is reported
   double residual = 0;  ///< |f_free| / |loads| at the end
   bool converged = false;
   std::string failure;  ///< why not, when not
