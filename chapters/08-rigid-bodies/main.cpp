@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
   return app.run(argc, argv, [&] {
     const RigidSetup setup = kit::rigid_setup(flags);
     const RigidState start = kit::spinning_state(setup.shape, kit::Vec3(0, 1, 0), setup.omega0);
-    kit::announce_run(app.report(), "runs", "Chapter 8's runs", kit::estimate_rigid_runs(setup),
+    kit::announce_run(app.report(), "runs", "Chapter 8", kit::estimate_rigid_runs(setup),
                       kit::describe_rigid_run(flags), {.max_bytes = kit::machine_memory()});
     const RigidKernels kernels = kit::student_rigid_kernels();
     app.section("the body", [&] { the_body(app, setup, kernels, start); });

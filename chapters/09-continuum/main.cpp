@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
   app.add_divergence_flag();
   return app.run(argc, argv, [&] {
     const ContinuumSetup setup = kit::continuum_setup(flags);
-    kit::announce_run(app.report(), "runs", "Chapter 9's runs", kit::estimate_continuum_runs(setup),
+    kit::announce_run(app.report(), "runs", "Chapter 9", kit::estimate_continuum_runs(setup),
                       kit::describe_continuum_run(flags), {.max_bytes = kit::machine_memory()});
     const ContinuumKernels kernels = kit::student_continuum_kernels();
     app.section("the material", [&] { the_material(app, setup); });

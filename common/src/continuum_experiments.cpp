@@ -224,6 +224,7 @@ PlateRun spin_plate(const FemMaterial& material, FemModel model, TimeIntegrator 
     }
     if (!body.x.allFinite() || body.largest_green_strain() > 10) {
       run.diverged = true;
+      run.diverged_at = static_cast<double>(done) * run.h;
       break;
     }
     sample(static_cast<double>(done) * run.h, k);

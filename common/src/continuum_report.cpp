@@ -93,18 +93,22 @@ void print_turns(Report& report, const std::vector<TurnedElement>& sweep) {
 }
 
 void print_plate(Report& report, const std::map<FemModel, PlateRun>& runs) {
-  auto table = report.table("plate", {{"model", ""},
-                                      {"h [s]", "h", "{:.3g}"},
-                                      {"steps", "steps"},
-                                      {"turned [rad]", "angle", "{:.4f}"},
-                                      {"largest |E|", "strain", "{:.3g}"},
-                                      {"energy change", "energy_change", "{:+.3g}"},
-                                      {"", "diverged"}});
+  auto table = report.table("plate", {{"model", ""}, {"h [s]", "h", "{:.3g}"}, {"steps", "steps"},
+                                      {"turned [rad]", "angle", "{:.4f}"}, {"largest |E|", "strain", "{:.3g}"},
+                                      {"energy change", "energy_change", "{:+.3g}"}, {"", "diverged"},
+                                      {"diverged at [s]", "diverged_at", "{:.3g}"}});
   for (const auto& [model, run] : runs) {
-    const PlateSample& end = run.samples.back();
-    const double start = run.samples.front().energy;
-    table.row(model_name(model), {model_name(model), run.h, run.steps, end.angle, end.strain,
-                                  (end.energy - start) / start, ReportValue(run.diverged)});
+    ReportValue angle, strain, energy, when;  // "-" once the run has diverged: its last state is no result
+    if (run.diverged) {
+      when = run.diverged_at;
+    } else {
+      const PlateSample& end = run.samples.back();
+      const double start = run.samples.front().energy;
+      angle = end.angle;
+      strain = end.strain;
+      energy = (end.energy - start) / start;
+    }
+    table.row(model_name(model), {model_name(model), run.h, run.steps, angle, strain, energy, run.diverged, when});
   }
   table.print();
 }

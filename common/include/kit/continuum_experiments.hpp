@@ -96,6 +96,7 @@ struct PlateRun {
   std::vector<PlateSample> samples;
   long steps = 0, iterations = 0;
   bool diverged = false;  ///< a position stopped being finite or the strain passed 10
+  double diverged_at = 0; ///< when that was seen [s] (checked at every sample)
   double h = 0;
 };
 /// The plate, free, spinning at plate_spin about its centre, for t_end [s] at step h [s] (0: the
