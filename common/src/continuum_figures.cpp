@@ -1,9 +1,11 @@
 // Chapter 9's figures (continuum_figures.hpp).
-#include <fmt/format.h>
+#include <kit/continuum_figures.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <kit/continuum_figures.hpp>
+
+#include <fmt/format.h>
+
 #include <kit/look.hpp>
 
 namespace kit {
@@ -77,7 +79,10 @@ Figure cantilever_figure(const std::map<FemModel, TipConvergence>& models, const
     // The finest mesh sits on Richardson's limit by construction: left out of the right panel.
     n.pop_back();
     distance.pop_back();
-    error.line(fmt::format("{}: h^{{{:.2f}}}", model_title(model), c.order), n, distance, look).with = "linespoints";
+    // The cell size h goes as elements^−½: an error ∝ h^p falls as elements^(−p/2) on this axis.
+    error.line(fmt::format("{}: elements^{{−{:.2f}}} = h^{{{:.2f}}}", model_title(model), c.order / 2, c.order), n,
+               distance, look)
+        .with = "linespoints";
   }
   const double timoshenko = timoshenko_tip(material) / euler_bernoulli;
   tip.line("Euler–Bernoulli", {10, last}, {1, 1}, look::exact);
@@ -144,7 +149,7 @@ Figure plate_figure(const std::map<FemModel, PlateRun>& runs, const std::string&
   return fig;
 }
 
-Figure plate_shapes_figure(const std::map<FemModel, std::vector<Outline>>& outlines, const std::vector<double>& times) {
+Figure plate_shapes_figure(const std::map<FemModel, std::vector<TimedOutline>>& outlines) {
   Figure fig("plate-shapes",
              "The spinning plate's outline: St Venant–Kirchhoff turns it; the linear model lets "
              "every node leave along its tangent, and the plate grows");
@@ -160,8 +165,8 @@ Figure plate_shapes_figure(const std::map<FemModel, std::vector<Outline>>& outli
     // The start is drawn last, dashed: a plate that has turned by π lies exactly on it.
     for (std::size_t k = list.size(); k-- > 0;) {
       std::vector<double> x, y;
-      for (const auto& [px, py] : list[k]) x.push_back(px), y.push_back(py);
-      p.line(fmt::format("t = {:.2g} s", times[k]), x, y,
+      for (const auto& [px, py] : list[k].second) x.push_back(px), y.push_back(py);
+      p.line(fmt::format("t = {:.3g} s", list[k].first), x, y,
              fmt::format("lc rgb '{}' lw 2{}", shades[std::min<std::size_t>(k, 3)], k == 0 ? " dt 2" : ""));
     }
   }
@@ -175,11 +180,15 @@ Figure stretch_figure(const std::map<FemModel, std::vector<StretchRow>>& rows) {
   auto& p = fig.panel("cells per side n", "stretch / (σL/E)");
   p.logx = true;
   for (const auto& [model, list] : rows) {
-    std::vector<double> n, regular, irregular;
-    for (const auto& r : list) n.push_back(r.n), regular.push_back(r.regular), irregular.push_back(r.irregular);
-    p.line(fmt::format("{}, regular mesh", model_title(model)), n, regular, model_style(model) + " lw 2 pt 7").with =
-        "linespoints";
-    p.line(fmt::format("{}, irregular mesh", model_title(model)), n, irregular, model_style(model) + " lw 2 dt 2 pt 6")
+    std::vector<double> n_regular, regular, n_irregular, irregular;  // a failed solve leaves its point out
+    for (const auto& r : list) {
+      if (r.regular) n_regular.push_back(r.n), regular.push_back(*r.regular);
+      if (r.irregular) n_irregular.push_back(r.n), irregular.push_back(*r.irregular);
+    }
+    p.line(fmt::format("{}, regular mesh", model_title(model)), n_regular, regular, model_style(model) + " lw 2 pt 7")
+        .with = "linespoints";
+    p.line(fmt::format("{}, irregular mesh", model_title(model)), n_irregular, irregular,
+           model_style(model) + " lw 2 dt 2 pt 6")
         .with = "linespoints";
   }
   p.commands.push_back("set xtics (4, 8, 16, 32, 64)");
@@ -189,7 +198,7 @@ Figure stretch_figure(const std::map<FemModel, std::vector<StretchRow>>& rows) {
 }
 
 Figure trade_figure(const std::vector<std::vector<TipRun>>& series) {
-  Figure fig("cost-of-accuracy", "What the cantilever's accuracy costs: each point one mesh, 20 to 1280 elements");
+  Figure fig("trade-timing", "What the cantilever's accuracy costs: each point one mesh, 20 to 1280 elements");
   auto& p = fig.panel("wall time [s]", "|tip / Euler–Bernoulli − 1|");
   p.logx = p.logy = true;
   const char* points[] = {"pt 7", "pt 5", "pt 9", "pt 11", "pt 13"};

@@ -36,33 +36,37 @@ ElementForces plane_stress_forces(const Matrix2& sigma, const Matrix2& rest_inve
   P.topRows<2>() = sigma;
   const Matrix32 H = -rest_volume * P * rest_inverse.transpose();
   ElementForces f;
-  f << -(H.col(0) + H.col(1)), H;
+  f.rightCols<2>() = H;
+  f.col(0) = -H.rowwise().sum();  // no net force
   return f;
-}
-
-Matrix2 hooke(const Matrix2& strain, const Lame& lame) {
-  return lame.lambda * strain.trace() * Matrix2::Identity() + 2 * lame.mu * strain;
 }
 
 }  // namespace
 
+Matrix2 linear_stress(const Matrix2& strain, const Lame& lame) {
+  return lame.lambda * strain.trace() * Matrix2::Identity() + 2 * lame.mu * strain;
+}
+
 ElementForces linear_forces(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume, const Lame& lame) {
-  return plane_stress_forces(hooke(cauchy_strain(F), lame), rest_inverse, rest_volume);
+  return plane_stress_forces(linear_stress(cauchy_strain(F), lame), rest_inverse, rest_volume);
 }
 
 Matrix9 linear_stiffness(const Matrix2& rest_inverse, double rest_volume, const Lame& lame) {
-  // The model is linear in the positions: the forces of a unit move of each coordinate, less the
-  // forces at the rest shape (which are zero there), are the stiffness's columns.
+  // The model is linear in the positions and has no force at rest: the forces with one coordinate
+  // moved by 1 m from the rest shape are the stiffness's columns. The rest shape, with X0 at the
+  // origin: X1 and X2 are the columns of Dm.
+  const Matrix2 rest_edges = rest_inverse.inverse();
   Matrix9 K = Matrix9::Zero();
   for (int node = 0; node < 3; ++node)
     for (int axis = 0; axis < 2; ++axis) {
-      Matrix32 dDs = Matrix32::Zero();  // how Ds = [x1 − x0, x2 − x0] moves with x_node[axis]
-      if (node == 0) dDs.row(axis).setConstant(-1);
-      else dDs(axis, node - 1) = 1;
-      const Matrix2 dG = (dDs * rest_inverse).topRows<2>();
-      const Matrix2 d_epsilon = 0.5 * (dG + dG.transpose());
-      const ElementForces df = plane_stress_forces(hooke(d_epsilon, lame), rest_inverse, rest_volume);
-      K.col(3 * node + axis) = df.reshaped();
+      FemVector3 x[3] = {FemVector3::Zero(), FemVector3::Zero(), FemVector3::Zero()};
+      x[1].head<2>() = rest_edges.col(0);
+      x[2].head<2>() = rest_edges.col(1);
+      x[node][axis] += 1;
+      Matrix32 moved_edges;
+      moved_edges.col(0) = x[1] - x[0];
+      moved_edges.col(1) = x[2] - x[0];
+      K.col(3 * node + axis) = linear_forces(moved_edges * rest_inverse, rest_inverse, rest_volume, lame).reshaped();
     }
   return K;
 }

@@ -6,11 +6,12 @@
 //      Kirchhoff, the linear model and the springs model (ns per spring too); beside StVK, the
 //      same loop calling the element's functions directly (what the indirection costs) and a
 //      hand-written loop computing F, E, S, P and H inline (what Eigen's small matrices cost);
-//   2. the stiffness (FemBody::stiffness: triplets, then setFromTriplets) at the same sizes, split
-//      into the element kernel alone (F and the 9×9 ∂f/∂x) and the sparse assembly around it,
-//      against assembly by a scatter into a pattern computed once (checked equal first);
-//      in both, the bound from the same run: the bytes each element must move, at the bandwidth of
-//      a triad from memory and of one over the loop's own working set;
+//   2. the stiffness (FemBody::stiffness: a scatter into the sparsity pattern the body found once)
+//      at the same sizes, split into the element kernel alone (F and the 9×9 ∂f/∂x) and the sparse
+//      assembly around it, against the straightforward assembly written here (the kernel, a fresh
+//      triplet list, setFromTriplets: what FemBody did before; checked equal first); in both, the
+//      bound from the same run: the bytes each element must move, at the bandwidth of a triad from
+//      memory and of one over the loop's own working set;
 //   3. one implicit step (implicit_step) of chapter 9's spinning plate at about 1e4 elements, split
 //      into the stiffness, the building of A and b, and the filtered PCG (ex 7.3), against Eigen's
 //      diagonal CG on the same A and b to the same tolerance and Eigen's SimplicialLDLT.
@@ -36,6 +37,7 @@
 #include <kit/continuum_experiments.hpp>
 #include <kit/fem_body.hpp>
 #include <kit/fem_element.hpp>
+#include <kit/fem_integrators.hpp>
 #include <kit/stopwatch.hpp>
 #include <kit/table.hpp>
 
@@ -163,44 +165,32 @@ constexpr int hand_flops = 108;
 
 double max_abs(const kit::NodeArray& a) { return a.cwiseAbs().maxCoeff(); }
 
-// The assembled stiffness by a scatter into a pattern computed once: `slot` holds, for each
-// element, where each of its 81 entries (row-major 9×9) sits in the matrix's value array.
-struct PatternScatter {
-  kit::SparseMatrix matrix;
-  std::vector<int> slot;
+// One element's 9×9 K as 81 triplets, block by block (node a's rows, node b's columns), row-major
+// within a block: the order FemBody::stiffness filled its list in before it found its pattern once.
+void add_triplets(std::vector<Eigen::Triplet<double>>& entries, const std::array<int, 3>& tri, const kit::Matrix9& K) {
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          entries.emplace_back(3 * tri[std::size_t(a)] + r, 3 * tri[std::size_t(b)] + c, K(3 * a + r, 3 * b + c));
+}
 
-  explicit PatternScatter(const kit::FemBody& body) {
-    body.stiffness(matrix);  // the pattern (its values are overwritten by every assemble)
-    const auto& triangles = body.mesh().triangles;
-    slot.reserve(81 * triangles.size());
-    for (const auto& t : triangles)
-      for (int a = 0; a < 3; ++a)
-        for (int r = 0; r < 3; ++r) {
-          const int row = 3 * t[std::size_t(a)] + r;
-          const int* first = matrix.innerIndexPtr() + matrix.outerIndexPtr()[row];
-          const int* last = matrix.innerIndexPtr() + matrix.outerIndexPtr()[row + 1];
-          for (int b = 0; b < 3; ++b)
-            for (int c = 0; c < 3; ++c)
-              slot.push_back(int(std::lower_bound(first, last, 3 * t[std::size_t(b)] + c) - matrix.innerIndexPtr()));
-        }
+// The baseline: the StVK stiffness assembled the straightforward way, as FemBody::stiffness did
+// before: the element kernel through FemKernels, a fresh triplet list, Eigen's setFromTriplets.
+void triplet_stiffness(const kit::FemBody& body, const std::vector<kit::RestTriangle>& rest, kit::SparseMatrix& out) {
+  const kit::FemKernels& kernels = body.kernels().element;
+  const auto& triangles = body.mesh().triangles;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(81 * triangles.size());
+  for (std::size_t e = 0; e < triangles.size(); ++e) {
+    const auto& t = triangles[e];
+    const kit::Matrix32 F = kernels.deformation_gradient(node(body.x, t[0]), node(body.x, t[1]), node(body.x, t[2]),
+                                                         rest[e].inverse);
+    add_triplets(entries, t, kernels.stiffness(F, rest[e].inverse, rest[e].volume, body.lame()));
   }
-
-  void assemble(const kit::FemBody& body, const std::vector<kit::RestTriangle>& rest) {
-    const kit::FemKernels& kernels = body.kernels().element;
-    double* values = matrix.valuePtr();
-    std::fill(values, values + matrix.nonZeros(), 0.0);
-    const auto& triangles = body.mesh().triangles;
-    const int* s = slot.data();
-    for (std::size_t e = 0; e < triangles.size(); ++e) {
-      const auto& t = triangles[e];
-      const kit::Matrix32 F = kernels.deformation_gradient(node(body.x, t[0]), node(body.x, t[1]),
-                                                           node(body.x, t[2]), rest[e].inverse);
-      const kit::Matrix9 K = kernels.stiffness(F, rest[e].inverse, rest[e].volume, body.lame());
-      for (int i = 0; i < 9; ++i)
-        for (int j = 0; j < 9; ++j) values[*s++] += K(i, j);
-    }
-  }
-};
+  out.resize(3 * body.nodes(), 3 * body.nodes());
+  out.setFromTriplets(entries.begin(), entries.end());
+}
 
 // --- the bytes an element step moves, at the least --------------------------------------------
 // Element data streamed once a call: three node indices (12 B) and the rest shape (Dm⁻¹ 32 B and
@@ -210,18 +200,21 @@ struct PatternScatter {
 // the two indices, rest length and stiffness (24 B); per node v as well (24 B), 120 B.
 double element_forces_bytes(double elements, double nodes) { return 52 * elements + 96 * nodes; }
 double spring_forces_bytes(double springs, double nodes) { return 24 * springs + 120 * nodes; }
-// The stiffness by FemBody::stiffness: the element data and x (24 B a node), then per element 81
-// triplets of 16 B (two int indices, the value), written (twice, with the read for ownership) and
-// read by setFromTriplets' counting and inserting passes: 4 × 16 B each; its transposed copy takes
-// the 81 entries (12 B: value and index) written (×2) and read when duplicates are summed (×1); the
+// The stiffness by FemBody::stiffness: the element data and x (24 B a node); the check that `out`
+// holds the pattern already, both row-start arrays (3 rows a node, 4 B each: 24 B a node) and both
+// column-index arrays (8 B a stored entry) read; each element's 27 slots (where each of its nine
+// blocks' three rows starts, 4 B); and the value array zeroed (8 B, ×2 with the read for
+// ownership) then summed into (read and written back once, ×2): 40 B a stored entry.
+double scatter_stiffness_bytes(double elements, double nodes, double stored) {
+  return 52 * elements + 48 * nodes + 27 * 4 * elements + 40 * stored;
+}
+// The baseline (triplet_stiffness): the element data and x, then per element 81 triplets of 16 B
+// (two int indices, the value), written (twice, with the read for ownership) and read by
+// setFromTriplets' counting and inserting passes: 4 × 16 B each; its transposed copy takes the 81
+// entries (12 B: value and index) written (×2) and read when duplicates are summed (×1); the
 // stored entries (12 B) are then read and written into the result (×3).
 double triplet_stiffness_bytes(double elements, double nodes, double stored) {
   return 52 * elements + 24 * nodes + 81 * elements * (4 * 16 + 3 * 12) + 3 * 12 * stored;
-}
-// The scatter: the element data, x, each element's 81 slots (4 B), and the value array zeroed
-// (8 B, ×2) then summed into (read and written back once, ×2): 32 B a stored entry.
-double scatter_stiffness_bytes(double elements, double nodes, double stored) {
-  return 52 * elements + 24 * nodes + 81 * 4 * elements + 32 * stored;
 }
 // The same bounds for the element kernel alone: its element data and x.
 double kernel_bytes(double elements, double nodes) { return 52 * elements + 24 * nodes; }
@@ -238,9 +231,9 @@ std::string ns(double seconds_per_item) { return kit::fixed(1e9 * seconds_per_it
 // --- 3. the implicit step --------------------------------------------------------------------
 // Applies each node's 3×3 filter to its three entries of w (what implicit_step does to b).
 void filter_in_place(const std::vector<kit::Matrix3>& filters, Eigen::VectorXd& w) {
-  for (std::size_t i = 0; i < filters.size(); ++i) {
-    const Eigen::Index k = 3 * Eigen::Index(i);
-    w.segment<3>(k) = filters[i] * w.segment<3>(k);
+  for (std::size_t node = 0; node < filters.size(); ++node) {
+    auto entries = w.segment<3>(3 * Eigen::Index(node));
+    entries = filters[node] * entries;
   }
 }
 
@@ -330,20 +323,28 @@ int main() {
 
   // --- 2: stiffness -------------------------------------------------------------------------------
   fmt::print(
-      "2. Stiffness dF/dx (FemBody::stiffness: 81 triplets an element, then setFromTriplets), ns per element,\n"
-      "   split into the element kernel alone (F and the 9x9 K of ex 9.1 and 9.3 through FemKernels, summed\n"
-      "   into a dummy) and the sparse assembly around it; against a scatter into a pattern found once.\n");
+      "2. Stiffness dF/dx (FemBody::stiffness: each element's 9x9 scattered into the sparsity pattern the body\n"
+      "   found once), ns per element, split into the element kernel alone (F and the 9x9 K of ex 9.1 and 9.3\n"
+      "   through FemKernels, summed into a dummy) and the sparse assembly around it; against the baseline\n"
+      "   written here, the straightforward assembly (what FemBody::stiffness did before): the same kernel,\n"
+      "   81 triplets an element into a fresh list, then Eigen's setFromTriplets.\n");
   kit::Table stiffness({"n", "elements", "stored / element", "what", "ns / element", "x kernel", "B / element",
                         "floor, memory", "floor, working set"});
   checks.clear();
   std::vector<double> list_seconds;  // the triplet list alone, per element [s]
+  std::vector<double> ratios;        // the baseline over FemBody::stiffness
   for (const int n : cells) {
     const Sheets sheets(n);
     const kit::FemBody &stvk = sheets.stvk, &linear = sheets.linear, &springs = sheets.springs;
     const std::vector<kit::RestTriangle>& rest = sheets.rest;
     const double E = double(stvk.elements()), N = double(stvk.nodes()), S = double(springs.springs().size());
-    kit::SparseMatrix K_body, K_linear, K_springs;
-    PatternScatter scatter(stvk);
+    kit::SparseMatrix K_body, K_baseline, K_linear, K_springs;
+    // Checked first: the same matrix both ways.
+    stvk.stiffness(K_body);
+    triplet_stiffness(stvk, rest, K_baseline);
+    const kit::SparseMatrix difference = K_body - K_baseline;
+    checks.push_back(fmt::format("n = {}: {} and {} stored entries, ||K - K_triplets||_F / ||K_triplets||_F = {:.1e}",
+                                 n, K_body.nonZeros(), K_baseline.nonZeros(), difference.norm() / K_baseline.norm()));
     const kit::FemKernels& pointers = stvk.kernels().element;
     kit::Matrix9 dummy = kit::Matrix9::Zero();
     const auto kernel = [&] {
@@ -364,19 +365,14 @@ int main() {
         dummy += kit::stvk_stiffness(F, rest[e].inverse, rest[e].volume, stvk.lame());
       }
     };
-    // FemBody::stiffness's two assembly steps apart: its triplet list (a fresh vector each call, 81
-    // entries an element in the same order; unit values: the cost does not depend on them), and
+    // The baseline's two assembly steps apart: its triplet list (a fresh vector each call, 81 entries
+    // an element in the same order; unit values: the cost does not depend on them), and
     // setFromTriplets on such a list, built once.
     using Triplet = Eigen::Triplet<double>;
+    const kit::Matrix9 ones = kit::Matrix9::Ones();
     const auto fill_triplets = [&](std::vector<Triplet>& entries) {
-      const auto& triangles = stvk.mesh().triangles;
-      entries.reserve(81 * triangles.size());
-      for (const auto& tri : triangles)
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b)
-            for (int r = 0; r < 3; ++r)
-              for (int c = 0; c < 3; ++c)
-                entries.emplace_back(3 * tri[std::size_t(a)] + r, 3 * tri[std::size_t(b)] + c, 1.0);
+      entries.reserve(81 * stvk.mesh().triangles.size());
+      for (const auto& tri : stvk.mesh().triangles) add_triplets(entries, tri, ones);
     };
     const auto triplet_list = [&] {
       std::vector<Triplet> entries;
@@ -385,31 +381,30 @@ int main() {
     };
     std::vector<Triplet> prebuilt;
     fill_triplets(prebuilt);
-    kit::SparseMatrix K_triplets;
+    kit::SparseMatrix K_list;
     const auto from_triplets = [&] {
-      K_triplets.resize(3 * stvk.nodes(), 3 * stvk.nodes());
-      K_triplets.setFromTriplets(prebuilt.begin(), prebuilt.end());
+      K_list.resize(3 * stvk.nodes(), 3 * stvk.nodes());
+      K_list.setFromTriplets(prebuilt.begin(), prebuilt.end());
     };
     const std::vector<double> t = in_turn({
         [&] { stvk.stiffness(K_body); },
         kernel,
         direct_kernel,
-        [&] { scatter.assemble(stvk, rest); },
         [&] { linear.stiffness(K_linear); },
         [&] { springs.stiffness(K_springs); },
+        [&] { triplet_stiffness(stvk, rest, K_baseline); },
         triplet_list,
         from_triplets,
     });
-    sink = sink + dummy.sum() + K_linear.coeff(0, 0) + K_springs.coeff(0, 0) + K_triplets.coeff(0, 0);
+    sink = sink + dummy.sum() + K_body.coeff(0, 0) + K_baseline.coeff(0, 0) + K_linear.coeff(0, 0) +
+           K_springs.coeff(0, 0) + K_list.coeff(0, 0);
     list_seconds.push_back(t[6] / E);
-    const kit::SparseMatrix difference = scatter.matrix - K_body;
+    ratios.push_back(t[5] / t[0]);
     const double stored = double(K_body.nonZeros());
-    checks.push_back(fmt::format("n = {}: {} and {} stored entries, ||K_scatter - K||_F / ||K||_F = {:.1e}", n,
-                                 scatter.matrix.nonZeros(), K_body.nonZeros(), difference.norm() / K_body.norm()));
-    const double triplet_bytes = triplet_stiffness_bytes(E, N, stored);
     const double scatter_bytes = scatter_stiffness_bytes(E, N, stored);
+    const double triplet_bytes = triplet_stiffness_bytes(E, N, stored);
     const double element_bytes = kernel_bytes(E, N);
-    const double triplet_cache = triad_at(triplet_bytes), scatter_cache = triad_at(scatter_bytes);
+    const double scatter_cache = triad_at(scatter_bytes), triplet_cache = triad_at(triplet_bytes);
     const double kernel_cache = triad_at(element_bytes);
     const double list_bytes = 81 * 16 * 2 * E;  // the triplets written, each with its read for ownership
     const double list_cache = triad_at(list_bytes);
@@ -419,30 +414,37 @@ int main() {
                          ns(seconds / per), kit::fixed(seconds / t[1], 2), bytes > 0 ? kit::fixed(bytes / per, 0) : "",
                          bytes > 0 ? ns(bytes / bandwidth / per) : "", bytes > 0 ? ns(bytes / cache / per) : ""});
     };
-    row("StVK, FemBody::stiffness", t[0], E, stored / E, triplet_bytes, triplet_cache);
+    row("StVK, FemBody::stiffness (scatter into a pattern found once)", t[0], E, stored / E, scatter_bytes,
+        scatter_cache);
     row("  element kernel (pointers)", t[1], E, stored / E, element_bytes, kernel_cache);
-    row("  assembly: the rest", t[0] - t[1], E, stored / E, triplet_bytes - element_bytes, triplet_cache);
+    row("  element kernel, called directly", t[2], E, stored / E, element_bytes, kernel_cache);
+    row("  assembly: the rest", t[0] - t[1], E, stored / E, scatter_bytes - element_bytes, scatter_cache);
+    row("linear, FemBody::stiffness", t[3], E, double(K_linear.nonZeros()) / E, 0, 0);
+    row(fmt::format("springs, FemBody::stiffness (per spring: {} ns)", kit::fixed(1e9 * t[4] / S, 1)), t[4], E,
+        double(K_springs.nonZeros()) / E, 0, 0);
+    row("baseline: kernel + fresh triplets + setFromTriplets", t[5], E, stored / E, triplet_bytes, triplet_cache);
+    row("  assembly: the rest", t[5] - t[1], E, stored / E, triplet_bytes - element_bytes, triplet_cache);
     row("    the triplet list alone", t[6], E, stored / E, list_bytes, list_cache);
     row("    setFromTriplets alone", t[7], E, stored / E, triplet_bytes - element_bytes - list_bytes, triplet_cache);
-    row("  element kernel, called directly", t[2], E, stored / E, element_bytes, kernel_cache);
-    row("StVK, pattern once + scatter", t[3], E, stored / E, scatter_bytes, scatter_cache);
-    row("  scatter: the rest", t[3] - t[1], E, stored / E, scatter_bytes - element_bytes, scatter_cache);
-    row("linear, FemBody::stiffness", t[4], E, double(K_linear.nonZeros()) / E, 0, 0);
-    row(fmt::format("springs, FemBody::stiffness (per spring: {} ns)", kit::fixed(1e9 * t[5] / S, 1)), t[5], E,
-        double(K_springs.nonZeros()) / E, 0, 0);
   }
   stiffness.print(std::cout);
   fmt::print(
       "   Checked first, the same matrix: {};\n   {}.\n"
-      "   x kernel: the time over the element kernel's through pointers. 'the rest': the row above less the kernel:\n"
-      "   FemBody::stiffness's triplet vector (allocated anew every call, 81 x 16 B an element) and Eigen's\n"
-      "   setFromTriplets (a count, a transposed copy, duplicates summed, a transposed copy back), each also\n"
-      "   timed alone; the scatter's zeroing and 81 indexed additions an element. The list alone: {:.0f} ns\n"
-      "   an element at n = {} ({:.0f} MB, which the allocator reuses from call to call), {:.0f} ns at n = {}\n"
-      "   ({:.0f} MB: above glibc's largest mmap threshold, 32 MB, each call maps it anew, the system faults in\n"
-      "   and zeroes every page, and unmaps it). B / element: bytes counted in bench_continuum.cpp.\n\n",
-      checks[0], checks[1], 1e9 * list_seconds[0], cells[0], 81 * 16 * 2.0 * cells[0] * cells[0] / 1e6,
-      1e9 * list_seconds[1], cells[1], 81 * 16 * 2.0 * cells[1] * cells[1] / 1e6);
+      "   The baseline over FemBody::stiffness: {:.1f} times at n = {}, {:.1f} times at n = {}.\n"
+      "   x kernel: the time over the element kernel's through pointers. 'the rest': the first row of its\n"
+      "   group less the kernel (pointers): FemBody::stiffness's check that the matrix holds its pattern\n"
+      "   already (both index arrays compared), the values zeroed, and 81 indexed additions an element (27\n"
+      "   slots: a block's row is three adjacent values); the baseline's triplet vector (allocated anew every\n"
+      "   call, 81 x 16 B an element) and Eigen's setFromTriplets (a count, a transposed copy, duplicates\n"
+      "   summed, a transposed copy back), each also timed alone. The list alone: {:.0f} ns an element at\n"
+      "   n = {} ({:.0f} MB, which the allocator reuses from call to call), {:.0f} ns at n = {} ({:.0f} MB:\n"
+      "   above glibc's largest mmap threshold, 32 MB, each call maps it anew, the system faults in and zeroes\n"
+      "   every page, and unmaps it).\n"
+      "   B / element: bytes counted in bench_continuum.cpp (scatter_stiffness_bytes for FemBody::stiffness,\n"
+      "   triplet_stiffness_bytes for the baseline).\n\n",
+      checks[0], checks[1], ratios[0], cells[0], ratios[1], cells[1], 1e9 * list_seconds[0], cells[0],
+      81 * 16 * 2.0 * cells[0] * cells[0] / 1e6, 1e9 * list_seconds[1], cells[1],
+      81 * 16 * 2.0 * cells[1] * cells[1] / 1e6);
 
   // --- 3: one implicit step ---------------------------------------------------------------------
   // Chapter 9's spinning plate (spin_plate): 0.5 m, held in its plane, spinning at pi rad/s about its
@@ -465,12 +467,18 @@ int main() {
   const kit::NodeArray x0 = plate.x, v0 = plate.v;
   const auto restore = [&] { plate.x = x0, plate.v = v0; };
 
-  // implicit_step's pieces, written as it writes them (fem_body.cpp), each timed alone.
+  // implicit_step's pieces, written as it writes them (fem_integrators.cpp), each timed alone. Its K
+  // is a fresh matrix every step, so FemBody::stiffness copies its pattern in before the scatter:
+  // here too (the old K freed, as at the end of a step).
   kit::SparseMatrix K, A;
   kit::NodeArray f;
   Eigen::VectorXd b;
-  const auto assemble_stiffness = [&] { plate.stiffness(K); };
-  const auto build_system = [&] {  // A = M (1 + h c) − h² K (c = 0), b = S h (f + h K v)
+  const auto assemble_stiffness = [&] {
+    kit::SparseMatrix fresh;
+    plate.stiffness(fresh);
+    K.swap(fresh);
+  };
+  const auto build_system = [&] {  // A = −h² K, then M (1 + h c) on its diagonal (c = 0); b = S h (f + h K v)
     plate.forces(f, 0);
     const Eigen::VectorXd v = kit::flatten(plate.v);
     A = (-h * h) * K;
@@ -541,7 +549,7 @@ int main() {
                   iterations > 0 ? kit::fixed(1e3 * seconds / iterations, 4) : "",
                   solve ? kit::fixed(seconds / t[2], 2) : ""});
   };
-  piece("stiffness K (FemBody::stiffness)", t[0], slowest[0], 0, false);
+  piece("stiffness K (FemBody::stiffness, a fresh K)", t[0], slowest[0], 0, false);
   piece("A and b (forces, -h^2 K + M, b, filter)", t[1], slowest[1], 0, false);
   piece("solve: filtered PCG (ex 7.3)", t[2], slowest[2], pcg.iterations, true);
   piece("rest (v += dv, x += h v, copies)", rest_of_step, 0, 0, false);

@@ -2,17 +2,19 @@
 // against the small strain under rigid turns, the spinning plate against its closed forms, the
 // springs' mesh dependence, the solvers' counts, the OBJ meshes, divergence and bad input; and in
 // process, the sheet's forces and stiffness against each other and a membrane hanging in 3-D.
-#include <fmt/format.h>
-
-#include <catch2/catch.hpp>
 #include <cmath>
-#include <kit/continuum_experiments.hpp>
-#include <kit/obj_mesh.hpp>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <Eigen/Eigenvalues>
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <kit/continuum_experiments.hpp>
+#include <kit/obj_mesh.hpp>
 
 #include "fem_kernels.hpp"
 #include "chapter_run.hpp"
@@ -35,7 +37,13 @@ const json& default_run() {
 
 TEST_CASE("chapter 9: the cantilever converges to the 2-D answer at order 2, within 2% of Euler–Bernoulli") {
   const json& s = default_run();
+  // Plane stress: λ* = Eν/(1 − ν²), μ = E/(2(1 + ν)).
+  CHECK(double(s["material"]["lambda"]) == Approx(1e9 * 0.3 / (1 - 0.09)).epsilon(1e-14));
+  CHECK(double(s["material"]["mu"]) == Approx(1e9 / 2.6).epsilon(1e-14));
   CHECK(double(s["material"]["tip"]) == Approx(1.4715).epsilon(1e-12));  // mm: 1.5 ρ g L⁴ / (E h²)
+  // ω1 = 1.87510407² √(E I / (ρ A L⁴)) with I/A = h²/12.
+  CHECK(double(s["material"]["omega"]) == Approx(1.87510407 * 1.87510407 * std::sqrt(1e9 * 0.01 / 12 / 1000))
+                                              .epsilon(1e-12));
   // Timoshenko adds the shear: (E / (3 κ G)) (h / L)² = 2.6 / 2.5 × 1% = 1.04% more.
   CHECK(double(s["cantilever"]["above"]) == Approx(1.04).epsilon(1e-9));
   for (const char* model : {"linear", "stvk"}) {
@@ -47,7 +55,11 @@ TEST_CASE("chapter 9: the cantilever converges to the 2-D answer at order 2, wit
     CHECK(std::abs(double(c["vs_timoshenko"])) < 0.5);
     CHECK(double(c["order"]) > 1.6);  // linear triangles: error ∝ h²
     CHECK(double(c["order"]) < 2.2);
+    CHECK(double(c["richardson_order"]) > 1.7);
+    CHECK(double(c["richardson_order"]) < 2.1);
   }
+  // The springs settle away from the finite elements' own limit, not at it.
+  CHECK(double(s["cantilever"]["springs"]["vs_fem"]) < -14);
   // From below: every mesh but the finest is too stiff, and the error shrinks with each refinement.
   const json& meshes = s["cantilever"]["meshes"];
   for (std::size_t k = 1; k < meshes.size(); ++k) CHECK(double(meshes[k]["stvk"]) > double(meshes[k - 1]["stvk"]));
@@ -70,7 +82,11 @@ TEST_CASE("chapter 9: a rigid turn has no Green strain and no StVK force; the sm
     CHECK(double(r["stvk_force"]) < 1e-13);
     // ε = ½(G + Gᵀ) − I = (cos θ − 1) I for G the rotation.
     CHECK(double(r["cauchy_strain"]) == Approx(std::sqrt(2.0) * (1 - std::cos(theta))).margin(1e-15));
-    if (double(r["degrees"]) >= 30) CHECK(double(r["linear_force"]) > 10);  // ten times a 1% stretch's
+    // σ = 2(λ* + μ)(cos θ − 1) I against a 1% stretch's (λ* + 2μ) 0.01 along x: the largest nodal
+    // forces are in that ratio (Dm = 0.1 I for both).
+    const double lambda = 1e9 * 0.3 / 0.91, mu = 1e9 / 2.6;
+    CHECK(double(r["linear_force"]) ==
+          Approx(2 * (lambda + mu) * (1 - std::cos(theta)) / (0.01 * (lambda + 2 * mu))).margin(1e-12).epsilon(1e-12));
   }
 }
 
@@ -79,7 +95,10 @@ TEST_CASE("chapter 9: spun, St Venant–Kirchhoff turns the plate rigidly; the l
   for (const char* model : {"stvk", "springs"}) {
     INFO(model);
     CHECK(double(plate[model]["angle"]) == Approx(M_PI).epsilon(1e-5));  // ωt = π rad after 1 s
-    CHECK(double(plate[model]["strain"]) < 1e-5);                        // ρω²R²/E ≈ 6e-7
+    // The centrifugal stretch, ρω²R²/E ≈ 1000 × π² × 0.35² / 1e9 ≈ 1.2e-6 at the corners, less
+    // the rebound of a plate started unstretched.
+    CHECK(double(plate[model]["strain"]) < 1.5e-6);
+    CHECK(double(plate[model]["strain"]) > 1e-7);
     CHECK(std::abs(double(plate[model]["energy_change"])) < 1e-6);       // symplectic Euler
     CHECK_FALSE(bool(plate[model]["diverged"]));
   }
@@ -98,7 +117,7 @@ TEST_CASE("chapter 9: FEM's stretch does not care for the triangulation, the spr
   REQUIRE(rows["springs"].size() == 5);
   for (const auto& r : rows["stvk"]) {
     INFO("n = " << int(r["n"]));
-    CHECK(double(r["difference"]) < 0.01 * 4 / double(r["n"]));  // a bound that halves with each refinement
+    CHECK(double(r["difference"]) < 0.004 * 4 / double(r["n"]));  // a bound that halves with each refinement
     CHECK(double(r["regular"]) > 0.98);  // the clamp holds the sheet from narrowing: a little stiffer than 1-D
     CHECK(double(r["regular"]) < 0.99);
   }
@@ -123,8 +142,9 @@ TEST_CASE("chapter 9: every StVK solver finds the same tip; what each one counts
     CHECK(double(explicit_runs[k]["error"]) == Approx(double(newton[k]["error"])).margin(1e-6));
     CHECK(double(implicit_runs[k]["error"]) == Approx(double(newton[k]["error"])).margin(1e-6));
     CHECK(long(newton[k]["steps"]) <= 5);
-    CHECK(long(implicit_runs[k]["steps"]) == 40);
-    CHECK(long(implicit_runs[k]["iterations"]) > 0);
+    CHECK(long(implicit_runs[k]["steps"]) == 60);
+    // The PCG's iterations grow with the mesh (the condition number as h⁻²): at least 1.5 times.
+    if (k > 0) CHECK(double(implicit_runs[k]["iterations"]) > 1.5 * double(implicit_runs[k - 1]["iterations"]));
   }
   // The explicit step shrinks with the cell: twice the cells through the height, twice the steps.
   for (std::size_t k = 2; k < 4; ++k)
@@ -136,9 +156,12 @@ TEST_CASE("chapter 9: implicit Euler damps the spin; explicit Euler past its lim
   const json implicit = run_chapter({"--integrator", "implicit", "--dt", "0.01", "--t-end", "1"});
   const json& stvk = implicit["plate"]["stvk"];
   CHECK(long(stvk["steps"]) == 100);
-  CHECK(double(stvk["energy_change"]) < -0.5);  // ω² h a step: most of the spin's energy is gone
-  CHECK(double(stvk["angle"]) < 2.0);
+  CHECK(double(stvk["energy_change"]) < -0.99);  // as the README says: 99.8% of the spin's energy is gone
+  CHECK(double(stvk["angle"]) < 0.3);  // and it turns by 0.24 rad where π was due
   CHECK(double(stvk["strain"]) < 1e-4);  // but it stays a plate
+  // The linear plate's motion is force-free: implicit Euler follows it exactly.
+  CHECK(double(implicit["plate"]["linear"]["angle"]) == Approx(std::atan(M_PI)).epsilon(1e-9));
+  CHECK_FALSE(bool(implicit["plate"]["linear"]["diverged"]));
   const json diverged = run_chapter({"--integrator", "explicit", "--dt", "1e-4", "--t-end", "0.1"});
   REQUIRE(diverged.contains("divergences"));
   CHECK(bool(diverged["plate"]["stvk"]["diverged"]));
@@ -153,7 +176,7 @@ TEST_CASE("chapter 9: --frames writes one OBJ mesh a frame, the first at rest, e
   REQUIRE(result.exit_code == 0);
   const json s = json::parse(result.out);
   for (const char* figure :
-       {"turned-element", "spinning-plate", "plate-shapes", "cantilever", "mesh-dependence", "cost-of-accuracy"}) {
+       {"turned-element", "spinning-plate", "plate-shapes", "cantilever", "mesh-dependence", "trade-timing"}) {
     INFO(figure);
     CHECK(s["figures"].contains(figure));
   }
@@ -197,7 +220,7 @@ TEST_CASE("chapter 9 (in process): each model's stiffness is the derivative of i
     CHECK(worst < 1e-5 * dense.cwiseAbs().maxCoeff());
   }
   // A St Venant–Kirchhoff sheet held by its top corners, free in 3-D, pushed out of its plane,
-  // let go under gravity (along −y, in its plane) with damping: it sags and comes to rest.
+  // let go under gravity (along −y, in its plane) with damping: it sags and comes to rest in 5 s.
   kit::FemBody sheet(kit::continuum_mesh(0.4, 0.4, 4, 4, kit::MeshKind::regular), {1e6, 0.3, 200, 0.001},
                      kit::FemModel::stvk, kernels);
   for (long i = 0; i < sheet.nodes(); ++i) {
@@ -206,13 +229,53 @@ TEST_CASE("chapter 9 (in process): each model's stiffness is the derivative of i
   }
   kit::add_weight(sheet);
   long unconverged = 0;
-  for (int step = 0; step < 800; ++step) unconverged += !kit::implicit_step(sheet, 5e-3, 5.0).converged;
+  double out_of_plane = 0;
+  for (int step = 0; step < 1000; ++step) {
+    unconverged += !kit::implicit_step(sheet, 5e-3, 5.0).converged;
+    out_of_plane = std::max(out_of_plane, sheet.x.col(2).cwiseAbs().maxCoeff());
+  }
   CHECK(unconverged == 0);
   CHECK(sheet.x.allFinite());
-  CHECK(sheet.v.norm() < 1e-3);                    // at rest, or nearly
+  CHECK(sheet.v.cwiseAbs().maxCoeff() < 1e-6);  // at rest [m/s]
+  CHECK(kit::load_residual(sheet) < 1e-6);      // its forces balance its weight
   CHECK(sheet.x.col(1).minCoeff() < -1e-4);        // the bottom edge has sagged below y = 0
-  CHECK(std::abs(sheet.x.col(2).maxCoeff()) > 0);  // it moved out of its plane and back
+  // It moved out of its plane [m], and rests with a bulge of 7 mm: a membrane has no bending
+  // stiffness, and where its weight leaves it slack nothing flattens it.
+  CHECK(out_of_plane > 5e-3);
+  CHECK(sheet.x.col(2).cwiseAbs().maxCoeff() > 1e-3);
   CHECK(sheet.largest_green_strain() < 0.05);
+}
+
+TEST_CASE("chapter 9: a 95 s spin is unwrapped step by step: StVK turns 95π; the growing linear plate is no divergence") {
+  const json s = run_chapter({"--resolution", "2", "--t-end", "95", "--frames", "0"});
+  CHECK(double(s["plate"]["stvk"]["angle"]) == Approx(95 * M_PI).epsilon(1e-4));
+  CHECK(double(s["plate"]["springs"]["angle"]) == Approx(95 * M_PI).epsilon(1e-4));
+  CHECK_FALSE(bool(s["plate"]["linear"]["diverged"]));
+  CHECK(double(s["plate"]["linear"]["angle"]) == Approx(std::atan(95 * M_PI)).epsilon(1e-6));
+  CHECK_FALSE(s.contains("divergences"));
+}
+
+TEST_CASE("chapter 9 (in process): the explicit step limit is below the true 2/ω_max, within a factor of three") {
+  const kit::ContinuumKernels kernels = kit::student_continuum_kernels();
+  for (const kit::FemModel model : {kit::FemModel::linear, kit::FemModel::stvk, kit::FemModel::springs})
+    for (const kit::MeshKind mesh : {kit::MeshKind::regular, kit::MeshKind::irregular}) {
+      INFO(kit::model_name(model) << ", " << kit::mesh_name(mesh));
+      kit::FemBody body(kit::continuum_mesh(0.3, 0.2, 3, 2, mesh), {}, model, kernels);
+      body.hold_in_plane();
+      kit::SparseMatrix K;
+      body.stiffness(K);
+      // ω² are the eigenvalues of M⁻¹(−K), those of M^−½ (−K) M^−½, over the free coordinates (x, y).
+      const std::vector<int> free = kit::free_coordinates(body);
+      const Eigen::MatrixXd dense(K);
+      Eigen::MatrixXd reduced(free.size(), free.size());
+      for (std::size_t r = 0; r < free.size(); ++r)
+        for (std::size_t c = 0; c < free.size(); ++c)
+          reduced(r, c) = -dense(free[r], free[c]) / std::sqrt(body.masses[free[r] / 3] * body.masses[free[c] / 3]);
+      const double omega_max = std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(reduced).eigenvalues().maxCoeff());
+      const double limit = kit::explicit_step_limit(body);
+      CHECK(limit <= 2 / omega_max * (1 + 1e-12));
+      CHECK(limit >= 2 / omega_max / 3);
+    }
 }
 
 TEST_CASE("chapter 9 answers bad input with exit 2, a message naming the flag, and no file") {

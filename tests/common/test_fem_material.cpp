@@ -25,3 +25,14 @@ TEST_CASE("fem material: plane stress's λ* is 2λμ/(λ + 2μ) of the 3-D Lamé
   CHECK(kit::cantilever_tip_deflection(q, 0.3, 2e11, second_moment) == Approx(q * 0.0081 / (8 * 2e11 * 2.5e-12)));
   CHECK(kit::cantilever_tip_deflection(q, 0.3, 2e11, second_moment) == Approx(4.678e-3).epsilon(1e-3));
 }
+
+TEST_CASE("fem material: Timoshenko adds q L² / (2 κ G A) to Euler–Bernoulli", "[fem][material]") {
+  // A 1 m × 0.1 m beam, 1 cm thick, E = 1 GPa, ν = 0.3: the shear share is (E / (3 κ G)) (h/L)²
+  // of the bending's, 2.6 / 2.5 × 1% = 1.04%.
+  const double q = 1000 * 9.81 * 0.1 * 0.01, second_moment = kit::rectangle_second_moment(0.01, 0.1);
+  const double bending = kit::cantilever_tip_deflection(q, 1, 1e9, second_moment);
+  const double shear_modulus = 1e9 / 2.6;
+  const double both = kit::timoshenko_tip_deflection(q, 1, 1e9, second_moment, shear_modulus, 0.001);
+  CHECK(both - bending == Approx(q / (2 * 5.0 / 6.0 * shear_modulus * 0.001)).epsilon(1e-14));
+  CHECK(both / bending - 1 == Approx(0.0104).epsilon(1e-12));
+}

@@ -73,15 +73,17 @@ inline std::string describe(const RandomElement& e) {
 
 /// The element's F from its nodes, written out here so that no graded test needs ex 9.1.
 inline Matrix32 gradient_of(const std::array<FemVector3, 3>& x, const Matrix2& rest_inverse) {
-  Matrix32 Ds;
-  Ds << x[1] - x[0], x[2] - x[0];
-  return Ds * rest_inverse;
+  Matrix32 edges;
+  edges.col(0) = x[1] - x[0];
+  edges.col(1) = x[2] - x[0];
+  return edges * rest_inverse;
 }
 
 /// The element's St Venant–Kirchhoff energy V (μ E:E + ½λ tr(E)²) [J] with its nodes at x.
 inline double energy_at(const std::array<FemVector3, 3>& x, const RandomElement& e) {
   const Matrix32 F = gradient_of(x, e.rest.inverse);
-  const Matrix2 E = 0.5 * (F.transpose() * F - Matrix2::Identity());
+  const Matrix2 right_cauchy_green = F.transpose() * F;
+  const Matrix2 E = (right_cauchy_green - Matrix2::Identity()) / 2;
   return e.rest.volume * (e.lame.mu * E.squaredNorm() + 0.5 * e.lame.lambda * E.trace() * E.trace());
 }
 

@@ -80,12 +80,14 @@ class ChapterApp {
     const ProgressTask progress(title);
     return report_.attempt(title, std::forward<F>(fn));
   }
-  /// The same for a section that draws `figures`: when it waits for an exercise before drawing
-  /// one of them, the summary lists the ones not drawn under "figures_waiting".
+  /// The same for a section that draws `figures`: when it, or a part of it, waits for an exercise
+  /// before drawing one of them, the summary lists the ones not drawn under "figures_waiting".
   template <class F>
   auto section(const std::string& title, const std::vector<std::string>& figures, F&& fn) {
+    const auto skipped = [&] { return summary_.contains("skipped") ? summary_["skipped"].size() : 0; };
+    const std::size_t skipped_before = skipped();
     auto result = section(title, std::forward<F>(fn));
-    if (!result && !options_.no_plot)
+    if (skipped() > skipped_before && !options_.no_plot)
       for (const auto& name : figures)
         if (!summary_["figures"].contains(name)) summary_["figures_waiting"].push_back(name);
     return result;

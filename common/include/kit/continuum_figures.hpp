@@ -19,10 +19,11 @@ Figure cantilever_figure(const std::map<FemModel, TipConvergence>& models, const
 Figure turn_figure(const std::vector<TurnedElement>& sweep);
 /// The spinning plate: its largest Green strain and how far it turned, by model.
 Figure plate_figure(const std::map<FemModel, PlateRun>& runs, const std::string& integrator);
-/// The plate's outline at a few times, linear against St Venant–Kirchhoff: `outlines[model][k]`
-/// holds the boundary's (x, y) points [m] at time `times[k]`.
+/// The plate's outline at a few times, linear against St Venant–Kirchhoff: `outlines[model]`
+/// holds (t [s], the boundary's (x, y) points [m]) pairs.
 using Outline = std::vector<std::pair<double, double>>;
-Figure plate_shapes_figure(const std::map<FemModel, std::vector<Outline>>& outlines, const std::vector<double>& times);
+using TimedOutline = std::pair<double, Outline>;
+Figure plate_shapes_figure(const std::map<FemModel, std::vector<TimedOutline>>& outlines);
 /// The stretched sheet on regular and irregular meshes, FEM and springs.
 Figure stretch_figure(const std::map<FemModel, std::vector<StretchRow>>& rows);
 /// |tip error| against wall time: each model and solver over the meshes.

@@ -44,7 +44,7 @@ ContinuumSetup continuum_setup(const ContinuumFlags& flags);
 double scene_step(const ContinuumSetup& setup);
 /// What chapter 9's runs cost: the fixed experiments (about 10 s of element steps) and the scene.
 RunEstimate estimate_continuum_runs(const ContinuumSetup& setup);
-/// "--young 1e9 Pa, --resolution 8, --integrator explicit, --dt 0 s, --t-end 1 s".
+/// "--young 1e+09 Pa, --poisson 0.3, …, --frames 24": every flag an estimate depends on.
 std::string describe_continuum_run(const ContinuumFlags& flags);
 
 }  // namespace kit

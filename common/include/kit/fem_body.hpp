@@ -61,8 +61,13 @@ class FemBody {
   /// The total force on every node [N]: the model's internal forces, the loads, and a drag
   /// −m c v of c [1/s].
   void forces(NodeArray& out, double drag = 0) const;
-  /// ∂f/∂x of the internal forces [N/m], 3n×3n.
+  /// ∂f/∂x of the internal forces [N/m], 3n×3n, both triangles stored. Scattered into the
+  /// sparsity pattern the body found once (a 3×3 block for every pair of nodes an element or a
+  /// spring joins): `out` takes that pattern the first time and keeps it, so the next calls with
+  /// the same `out` neither allocate nor sort.
   void stiffness(SparseMatrix& out) const;
+  /// The deformation gradient F of element t, by ex 9.1.
+  Matrix32 gradient(std::size_t t) const;
   /// The model's stored energy [J] (the linear model's is ½ V σ:ε per element).
   double elastic_energy() const;
   /// How far each element is from its rest shape, the largest |E| (Frobenius) over elements.
@@ -82,41 +87,17 @@ class FemBody {
   std::vector<RestTriangle> rest_;
   Springs springs_;  ///< the springs model's edges
   std::vector<Matrix9> linear_stiffness_;  ///< the linear model's, per element: the same at every state
+  SparseMatrix pattern_;        ///< the stiffness's sparsity pattern, values zero
+  std::vector<int> slots_;      ///< where each block row starts in the values: 27 an element, 12 a spring
 };
 
 /// Gravity g [m/s²] along −y on every node's mass.
 void add_weight(FemBody& body, double gravity = 9.81);
 
-/// The body's rest state under its loads, by Newton's method on the free coordinates with a
-/// sparse direct solver (LDLᵀ): each step solves −K Δx = f. The linear model converges in one
-/// step. Converged when |f| on the free coordinates ≤ tolerance × |loads|, or at round-off: when
-/// a step moved no coordinate by more than 1e-9 of the largest in-plane displacement; fails on a
-/// step that is not finite, or a singular K. When the whole load fails (a large deflection, far
-/// from the start), it is applied again from rest in 4, 16 and then 64 equal increments, each
-/// solved from the last: a continuation along the load.
-struct StaticSolve {
-  int iterations = 0;   ///< Newton steps, over every increment
-  int increments = 1;   ///< the load steps of the attempt that is reported
-  double residual = 0;  ///< |f_free| / |loads| at the end
-  bool converged = false;
-  std::string failure;  ///< why not, when not
-};
-StaticSolve solve_static(FemBody& body, int max_iterations = 40, double tolerance = 1e-10);
-
-/// One step of symplectic Euler [s]: v += h M⁻¹ f (filtered), x += h v.
-void explicit_step(FemBody& body, double h, double drag);
-/// The largest stable explicit step of the body at rest, 2/ω_max, with ω_max bounded above by
-/// Gershgorin's bound on M⁻¹K (so the step is safe, within a factor of about two).
-double explicit_step_limit(const FemBody& body);
-
-/// One step of implicit Euler [s] (Baraff & Witkin 1998, chapter 7's form):
-///   (M (1 + h c) − h² K) Δv = h (f + h K v),   v += Δv,   x += h v,
-/// solved by the filtered PCG (ex 7.3) to `tolerance`. Reports the solver's iterations and
-/// whether it converged (it may not, if K is indefinite: a compressed St Venant–Kirchhoff element).
-struct ImplicitStep {
-  int iterations = 0;
-  bool converged = false;
-};
-ImplicitStep implicit_step(FemBody& body, double h, double drag, double tolerance = 1e-8, int max_iterations = 20000);
+/// The coordinates the filters leave free (the filters here are diagonal, 0 or 1), as indices
+/// 3i + axis into the interleaved vectors.
+std::vector<int> free_coordinates(const FemBody& body);
+/// |f| over the free coordinates / |loads|: how far the body is from balancing its loads.
+double load_residual(const FemBody& body);
 
 }  // namespace kit

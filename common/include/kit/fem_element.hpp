@@ -67,6 +67,8 @@ struct FemKernels {
 /// of the in-plane block G (the top 2×2 of F). Zero for a translation, not for a rotation: a turn
 /// by θ reads as the strain (cos θ − 1) I.
 Matrix2 cauchy_strain(const Matrix32& F);
+/// Hooke's law in Lamé's form, σ = λ tr(ε) I + 2μ ε [Pa], for the small strain ε.
+Matrix2 linear_stress(const Matrix2& strain, const Lame& lame);
 /// Its forces: σ = λ tr(ε) I + 2μ ε, −V [σ; 0] Dm⁻ᵀ on nodes 1 and 2, the opposite sum on node 0.
 ElementForces linear_forces(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume, const Lame& lame);
 /// Its stiffness, the same at every F: ∂f/∂x of linear_forces, zero in z.

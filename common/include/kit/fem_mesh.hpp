@@ -29,9 +29,9 @@ enum class CellDiagonal { rising, falling, alternating };
 TriangleMesh regular_rectangle_mesh(double width, double height, int nx, int ny, CellDiagonal diagonal);
 
 /// The same rectangle and boundary nodes as regular_rectangle_mesh, its interior nodes each moved
-/// by up to `jitter` of a cell (in [0, 0.45], so that no two nodes meet) in a direction drawn from
-/// `seed` (the same seed, the same mesh, on every machine), then triangulated by Delaunay's
-/// criterion (Bowyer–Watson): no node lies inside another triangle's circumcircle.
+/// by up to `jitter` of a cell along each axis (in [0, 0.45], so that no two nodes meet), drawn from
+/// `seed` (the same seed, the same mesh, on every machine), then made Delaunay by Lawson's edge
+/// flips from the regular mesh: no node lies inside another triangle's circumcircle.
 TriangleMesh irregular_rectangle_mesh(double width, double height, int nx, int ny, std::uint64_t seed,
                                       double jitter = 0.3);
 
