@@ -94,10 +94,11 @@ void cost_of_accuracy(ChapterApp& app, const ContinuumSetup& s, const ContinuumK
       {FemModel::stvk, TipSolver::newton}, {FemModel::stvk, TipSolver::explicit_relaxation},
       {FemModel::stvk, TipSolver::implicit_relaxation}};
   std::vector<std::vector<kit::TipRun>> series;
-  for (const auto& [model, solver] : methods)
-    app.report().attempt(fmt::format("{}, {}", kit::model_name(model), kit::solver_name(solver)), [&] {
+  for (const auto& method : methods)  // not a structured binding: a lambda may not capture one before C++23
+    app.report().attempt(fmt::format("{}, {}", kit::model_name(method.first), kit::solver_name(method.second)), [&] {
       std::vector<kit::TipRun> list;
-      for (const int ny : {1, 2, 4, 8}) list.push_back(kit::run_cantilever(s.material, model, solver, ny, kernels));
+      for (const int ny : {1, 2, 4, 8})
+        list.push_back(kit::run_cantilever(s.material, method.first, method.second, ny, kernels));
       series.push_back(list);
     });
   if (series.empty()) return;
