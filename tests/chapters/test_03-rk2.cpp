@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include "process.hpp"

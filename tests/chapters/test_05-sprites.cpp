@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -192,7 +192,7 @@ TEST_CASE("chapter 5: a run too long for the machine is refused up front with it
                                                       "--height", "4320", "--out", (out.path() / "figures").string()});
   INFO(result.err);
   CHECK(result.exit_code == 2);
-  CHECK_THAT(result.err, Catch::Contains("--frames 20000") && Catch::Contains("takes about"));
+  CHECK_THAT(result.err, ContainsSubstring("--frames 20000") && ContainsSubstring("takes about"));
   CHECK_FALSE(fs::exists(out.path() / "figures"));
 }
 
@@ -207,8 +207,8 @@ TEST_CASE("chapter 5: a billion particles are refused up front with the memory t
                                                         "1", "--out", (out.path() / "figures").string()});
     INFO(result.err);
     CHECK(result.exit_code == 2);
-    CHECK_THAT(result.err, Catch::Contains(std::string("--max-particles ") + digits) &&
-                               Catch::Contains("ask for less memory"));
+    CHECK_THAT(result.err, ContainsSubstring(std::string("--max-particles ") + digits) &&
+                               ContainsSubstring("ask for less memory"));
     // The memory said is at least the particle store's.
     std::smatch memory;
     REQUIRE(std::regex_search(result.err, memory, std::regex(R"(and ([0-9.]+) (GB|TB), over the limit)")));
@@ -227,7 +227,7 @@ TEST_CASE("chapter 5: explicit Euler past Δt = 2/k diverges: a reported result,
                                       "euler"};
   const json s = run_chapter(args);
   REQUIRE(s.contains("divergences"));
-  CHECK_THAT(s["divergences"].dump(), Catch::Contains("infinite at frame"));
+  CHECK_THAT(s["divergences"].dump(), ContainsSubstring("infinite at frame"));
   CHECK(long(s["counts"]["frames"]) < 400);
   auto failing = args;
   failing.insert(failing.end(), {"--fail-on-divergence", "--no-plot", "--out", (dir.path() / "o").string()});
@@ -244,7 +244,7 @@ TEST_CASE("chapter 5: explicit Euler past Δt = 2/k diverges: a reported result,
                                                      out.path().string()});
   INFO(drawn.err);
   CHECK(drawn.exit_code == 0);
-  CHECK_THAT(drawn.out, Catch::Contains("No frame was rendered"));
+  CHECK_THAT(drawn.out, ContainsSubstring("No frame was rendered"));
   CHECK(fs::exists(out.path() / "counts.png"));
 }
 
@@ -259,7 +259,7 @@ TEST_CASE("chapter 5: a rerun into the same folder animates its own frames, not 
   run_chapter(with_frames("12"), out.path());
   const json second = run_chapter(with_frames("4"), out.path());
   CHECK(kit::test::files_under(out.path() / "frames").size() == 4);
-  CHECK_THAT(slurp(out.path() / "play.gp"), Catch::Contains("[i = 0:3]"));
+  CHECK_THAT(slurp(out.path() / "play.gp"), ContainsSubstring("[i = 0:3]"));
   CHECK(second["frames"]["count"] == 4);
 }
 
@@ -279,7 +279,7 @@ TEST_CASE("chapter 5: without ffmpeg the chapter says so and keeps the PNG frame
                                                      "--out", out.path().string()});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
-  CHECK_THAT(result.out, Catch::Contains("ffmpeg not found"));
+  CHECK_THAT(result.out, ContainsSubstring("ffmpeg not found"));
   CHECK(fs::exists(out.path() / "frames" / "frame_0003.png"));
   CHECK_FALSE(fs::exists(out.path() / "animation.mp4"));
 }

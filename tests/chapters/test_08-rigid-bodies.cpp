@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <kit/rigid_stepper.hpp>

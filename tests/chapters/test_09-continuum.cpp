@@ -9,7 +9,7 @@
 #include <vector>
 
 #include <Eigen/Eigenvalues>
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/atomic_file.hpp>
 
@@ -27,7 +27,7 @@ TEST_CASE("an atomic write leaves exactly the final file, with the whole content
 TEST_CASE("a write that cannot happen throws, naming the path, and leaves nothing") {
   kit::test::TempDir dir("atomic-fail");
   const auto path = dir.path() / "missing-folder" / "out.txt";
-  CHECK_THROWS_WITH(kit::write_file_atomic(path, "x"), Catch::Contains("missing-folder"));
+  CHECK_THROWS_WITH(kit::write_file_atomic(path, "x"), ContainsSubstring("missing-folder"));
   CHECK(kit::test::files_under(dir.path()).empty());
 }
 

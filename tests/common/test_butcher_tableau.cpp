@@ -1,4 +1,4 @@
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/butcher_tableau.hpp>
 

@@ -2,7 +2,7 @@
 #include <iostream>
 #include <sstream>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/chapter_app.hpp>
 
@@ -52,14 +52,14 @@ TEST_CASE("a bad value is a usage error naming the flag, the value and the range
     INFO("--dt " << bad << " -> " << outcome.err);
     CHECK(outcome.code == 2);
     CHECK_FALSE(outcome.body_ran);
-    CHECK_THAT(outcome.err, Catch::Contains("--dt") && Catch::Contains(bad) && Catch::Contains("(0, 10]"));
+    CHECK_THAT(outcome.err, ContainsSubstring("--dt") && ContainsSubstring(bad) && ContainsSubstring("(0, 10]"));
   }
 }
 
 TEST_CASE("whole-number flags are checked the same way") {
   const auto outcome = run_app({"--count", "0"});
   CHECK(outcome.code == 2);
-  CHECK_THAT(outcome.err, Catch::Contains("--count") && Catch::Contains("[1, 100]"));
+  CHECK_THAT(outcome.err, ContainsSubstring("--count") && ContainsSubstring("[1, 100]"));
 }
 
 TEST_CASE("a whole number may be written as a number (1e2), never as a fraction, in hexadecimal or octal") {
@@ -73,17 +73,17 @@ TEST_CASE("a whole number may be written as a number (1e2), never as a fraction,
     INFO(refused << ": " << outcome.err);
     CHECK(outcome.code == 2);
     CHECK_FALSE(outcome.body_ran);
-    CHECK_THAT(outcome.err, Catch::Contains("--count") && Catch::Contains("value " + refused) &&
-                                Catch::Contains("[1, 100]"));
+    CHECK_THAT(outcome.err, ContainsSubstring("--count") && ContainsSubstring("value " + refused) &&
+                                ContainsSubstring("[1, 100]"));
   }
 }
 
 TEST_CASE("an unknown flag or format is a usage error") {
   CHECK(run_app({"--bogus"}).code == 2);
-  CHECK_THAT(run_app({"--bogus"}).err, Catch::Contains("--bogus"));
+  CHECK_THAT(run_app({"--bogus"}).err, ContainsSubstring("--bogus"));
   const auto format = run_app({"--format", "pdf,gif"});
   CHECK(format.code == 2);
-  CHECK_THAT(format.err, Catch::Contains("gif"));
+  CHECK_THAT(format.err, ContainsSubstring("gif"));
 }
 
 TEST_CASE("good flags reach the body and the summary's parameters") {
@@ -109,7 +109,7 @@ TEST_CASE("a UsageError thrown by the body exits 2, any other failure exits 1") 
   std::cerr.rdbuf(old);
   CHECK(usage == 2);
   CHECK(failure == 1);
-  CHECK_THAT(captured.str(), Catch::Contains("whole number of steps") && Catch::Contains("solver failed"));
+  CHECK_THAT(captured.str(), ContainsSubstring("whole number of steps") && ContainsSubstring("solver failed"));
 }
 
 TEST_CASE("a bad --out is refused with exit 2 before the body runs: empty, a file, below a file") {
@@ -120,7 +120,7 @@ TEST_CASE("a bad --out is refused with exit 2 before the body runs: empty, a fil
     INFO("--out '" << bad << "' -> " << outcome.err);
     CHECK(outcome.code == 2);
     CHECK_FALSE(outcome.body_ran);
-    CHECK_THAT(outcome.err, Catch::Contains("--out"));
+    CHECK_THAT(outcome.err, ContainsSubstring("--out"));
   }
   CHECK(run_app({"--out", "", "--no-plot", "--quiet"}).code == 0);  // no figure, no folder needed
   const auto fine = run_app({"--out", (dir.path() / "new" / "folder").string(), "--quiet"});

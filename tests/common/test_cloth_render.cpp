@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/cloth.hpp>
 #include <kit/cloth_renderer.hpp>
@@ -119,7 +119,7 @@ TEST_CASE("read_obj refuses malformed lines and indices out of range, naming the
     try {
       kit::read_obj(path);
     } catch (const std::runtime_error& e) {
-      CHECK_THAT(e.what(), Catch::Contains(":8:"));
+      CHECK_THAT(e.what(), ContainsSubstring(":8:"));
     }
   }
   write_text(path, "v 0 0 0\nv 1 0 0\nvn 0 0 1\n");  // normals neither absent nor one per vertex
@@ -238,7 +238,7 @@ TEST_CASE("the frame writer numbers frames from 0, clears stale ones and leaves 
   CHECK(std::filesystem::exists(dir.path() / "drape_play.gp"));
   std::ifstream player(outputs->player);
   const std::string script((std::istreambuf_iterator<char>(player)), std::istreambuf_iterator<char>());
-  CHECK_THAT(script, Catch::Contains("frames/frame_%04d.png") && Catch::Contains("i = 0:5"));
+  CHECK_THAT(script, ContainsSubstring("frames/frame_%04d.png") && ContainsSubstring("i = 0:5"));
   for (const auto& file : kit::test::files_under(dir.path()))
     CHECK(file.filename().string().find(".tmp") == std::string::npos);
   CHECK(std::filesystem::exists(frames / "notes.txt"));

@@ -1,5 +1,5 @@
 // ERRATA item 1 checked on runs (euler_gap.hpp): both Euler gaps equal k/2·Δt²·|g|, each on its side.
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/euler_gap.hpp>
 

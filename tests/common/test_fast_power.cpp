@@ -4,7 +4,7 @@
 #include <random>
 #include <stdexcept>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/fast_power.hpp>
 

@@ -2,7 +2,7 @@
 // estimate, and the mesh's boundary loop.
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/fem_element.hpp>
 #include <kit/fem_mesh.hpp>

@@ -1,6 +1,6 @@
 // Chapter 9's material: Lamé's parameters in 3-D and in plane stress, and the cantilever's closed
 // form the finite elements converge to.
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/fem_material.hpp>
 

@@ -4,7 +4,7 @@
 #include <map>
 #include <utility>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/fem_mesh.hpp>
 

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/figure.hpp>
 
@@ -52,20 +52,20 @@ TEST_CASE("the data file holds one block per series, with full precision") {
   options.dir = dir.path();
   options.render = false;
   kit::write_figure(fig, options);
-  CHECK_THAT(slurp(dir.path() / "precise.dat"), Catch::Contains("0.33333333333333331"));
+  CHECK_THAT(slurp(dir.path() / "precise.dat"), ContainsSubstring("0.33333333333333331"));
   CHECK(kit::test::files_under(dir.path()).size() == 2);
 }
 
 TEST_CASE("the script carries the titles, axis labels, legend and log scales") {
   const auto script = kit::gnuplot_script(sample_figure(), "sample.dat");
-  CHECK_THAT(script, Catch::Contains("set multiplot title \"A sample figure\""));
-  CHECK_THAT(script, Catch::Contains("set xlabel \"time t [s]\""));
-  CHECK_THAT(script, Catch::Contains("set ylabel \"error [m]\""));
-  CHECK_THAT(script, Catch::Contains("title \"exact\""));
+  CHECK_THAT(script, ContainsSubstring("set multiplot title \"A sample figure\""));
+  CHECK_THAT(script, ContainsSubstring("set xlabel \"time t [s]\""));
+  CHECK_THAT(script, ContainsSubstring("set ylabel \"error [m]\""));
+  CHECK_THAT(script, ContainsSubstring("title \"exact\""));
   // The empty series keeps its data block (index 1), so later indices hold, but is not plotted.
-  CHECK_THAT(script, !Catch::Contains("data index 1 "));
-  CHECK_THAT(script, Catch::Contains("index 2 using 1:(($2>=1e-280&&$2<=1e280)?$2:NaN) with points title \"measured\""));
-  CHECK_THAT(script, Catch::Contains("set logscale y"));
+  CHECK_THAT(script, !ContainsSubstring("data index 1 "));
+  CHECK_THAT(script, ContainsSubstring("index 2 using 1:(($2>=1e-280&&$2<=1e280)?$2:NaN) with points title \"measured\""));
+  CHECK_THAT(script, ContainsSubstring("set logscale y"));
 }
 
 TEST_CASE("a slide author can redraw a figure from its folder with plain gnuplot") {
@@ -78,7 +78,7 @@ TEST_CASE("a slide author can redraw a figure from its folder with plain gnuplot
   const std::string command = "cd " + kit::test::shell_quote(dir.path().string()) +
                               " && gnuplot -e \"fmt='svg'\" sample.gp 2>&1";
   REQUIRE(std::system(command.c_str()) == 0);
-  CHECK_THAT(slurp(dir.path() / "sample.svg"), Catch::Contains("<svg"));
+  CHECK_THAT(slurp(dir.path() / "sample.svg"), ContainsSubstring("<svg"));
 }
 
 TEST_CASE("an unknown format is refused before anything is written") {
@@ -86,7 +86,7 @@ TEST_CASE("an unknown format is refused before anything is written") {
   kit::FigureOptions options;
   options.dir = dir.path() / "never";
   options.formats = {"gif"};
-  CHECK_THROWS_WITH(kit::write_figure(sample_figure(), options), Catch::Contains("gif"));
+  CHECK_THROWS_WITH(kit::write_figure(sample_figure(), options), ContainsSubstring("gif"));
   CHECK_FALSE(std::filesystem::exists(options.dir));
 }
 
@@ -103,7 +103,7 @@ TEST_CASE("--show without a display writes the files and says why no window open
   const auto files = kit::write_figure(sample_figure(), options);
   if (!saved.empty()) setenv("DISPLAY", saved.c_str(), 1);
   REQUIRE(files.notes.size() == 1);
-  CHECK_THAT(files.notes[0], Catch::Contains("no display"));
+  CHECK_THAT(files.notes[0], ContainsSubstring("no display"));
   CHECK(std::filesystem::exists(dir.path() / "sample.png"));
 }
 

@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/free_fall.hpp>
 

@@ -1,5 +1,5 @@
 // The progress line (progress.hpp): when it draws, what it says, and that it stays silent.
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <cstdlib>
 #include <iostream>

@@ -2,7 +2,7 @@
 #include <cmath>
 #include <sstream>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/report.hpp>
 

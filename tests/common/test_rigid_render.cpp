@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/animation.hpp>
 #include <kit/cloth_renderer.hpp>

@@ -1,5 +1,5 @@
 // Estimates of a run's cost from its counts, said before it starts (run_estimate.hpp).
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <sstream>
 
@@ -77,22 +77,22 @@ TEST_CASE("announcing: stored always, printed when long or large, refused with t
   CHECK(summary["long"]["estimate"]["announced"] == true);
 
   kit::announce_run(report, "large", "The record", {1e6, 1e-9, 1e9}, "--t-end 10 s");
-  CHECK_THAT(text.str(), Catch::Contains("The record takes about 1e+06 steps: under a second and 1 GB."));
+  CHECK_THAT(text.str(), ContainsSubstring("The record takes about 1e+06 steps: under a second and 1 GB."));
 
   try {
     kit::announce_run(report, "huge", "The round-off sweep", {2.3e12, 1e-9, 1e3}, "--t-end 1 s, --dt-min 1e-12 s");
     FAIL("not refused");
   } catch (const kit::UsageError& e) {
-    CHECK_THAT(e.what(), Catch::Contains("--t-end 1 s, --dt-min 1e-12 s") &&
-                             Catch::Contains("about 2.3e+12 steps: about 38 min and under 1 MB") &&
-                             Catch::Contains("over the limit of 10 min and 4 GB"));
+    CHECK_THAT(e.what(), ContainsSubstring("--t-end 1 s, --dt-min 1e-12 s") &&
+                             ContainsSubstring("about 2.3e+12 steps: about 38 min and under 1 MB") &&
+                             ContainsSubstring("over the limit of 10 min and 4 GB"));
   }
   CHECK_FALSE(summary.contains("huge"));  // refused before anything is recorded
 
   // Over the memory only: the advice is about memory, not about steps.
   CHECK_THROWS_WITH(kit::announce_run(report, "big", "The store", {1, 1e-9, 1.2e11}, "--max-particles 1e9"),
-                    Catch::Contains("about 1 steps: under a second and 120 GB") &&
-                        Catch::Contains("choose values that ask for less memory"));
+                    ContainsSubstring("about 1 steps: under a second and 120 GB") &&
+                        ContainsSubstring("choose values that ask for less memory"));
   CHECK_THROWS_WITH(kit::announce_run(report, "both", "The sweep", {2.3e12, 1e-9, 1.2e11}, "--t-end 1 s"),
-                    Catch::Contains("ask for fewer steps and less memory"));
+                    ContainsSubstring("ask for fewer steps and less memory"));
 }

@@ -9,7 +9,7 @@
 
 #include <unistd.h>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 #include <fmt/format.h>
 
 #include <kit/animation.hpp>
@@ -309,9 +309,9 @@ TEST_CASE("write_png writes a valid PNG and, when it cannot, throws naming the p
   std::filesystem::permissions(locked, std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
   const bool can_still_write = ::access(locked.c_str(), W_OK) == 0;  // root ignores permissions
   const auto missing = dir.path() / "no-such-folder" / "frame.png";
-  CHECK_THROWS_WITH(kit::write_png(image, missing), Catch::Contains("no-such-folder"));
+  CHECK_THROWS_WITH(kit::write_png(image, missing), ContainsSubstring("no-such-folder"));
   if (!can_still_write)
-    CHECK_THROWS_WITH(kit::write_png(image, locked / "frame.png"), Catch::Contains("locked"));
+    CHECK_THROWS_WITH(kit::write_png(image, locked / "frame.png"), ContainsSubstring("locked"));
   std::filesystem::permissions(locked, std::filesystem::perms::owner_all);
   CHECK(kit::test::files_under(dir.path()).size() == 1);
   CHECK_THROWS_AS(kit::read_png(missing), std::runtime_error);
@@ -355,9 +355,9 @@ TEST_CASE("every built-in texture exists, has alpha in [0, 1], a bright centre a
 TEST_CASE("an unknown texture name or unreadable PNG is a usage error naming it and the built-ins",
           "[sprite-render]") {
   CHECK_THROWS_AS(kit::builtin_texture("sparkle"), kit::UsageError);
-  CHECK_THROWS_WITH(kit::texture_for("sparkle"), Catch::Contains("sparkle") && Catch::Contains("soft, spark, flake, smoke"));
+  CHECK_THROWS_WITH(kit::texture_for("sparkle"), ContainsSubstring("sparkle") && ContainsSubstring("soft, spark, flake, smoke"));
   CHECK_THROWS_WITH(kit::texture_for("/no/such/texture.png"),
-                    Catch::Contains("/no/such/texture.png") && Catch::Contains("soft"));
+                    ContainsSubstring("/no/such/texture.png") && ContainsSubstring("soft"));
   CHECK_THROWS_AS(kit::SpriteRenderer(scene_with({emitter(kit::Blend::over, "sparkle")}), 8, 8), kit::UsageError);
   CHECK(kit::texture_for("flake").width == 64);
 }
@@ -377,8 +377,8 @@ TEST_CASE("without ffmpeg on PATH, encode_animation writes nothing and says how 
   else
     ::unsetenv("PATH");
   CHECK(result.files.empty());
-  CHECK_THAT(result.note, Catch::Contains("ffmpeg not found") && Catch::Contains("./kit deps") &&
-                              Catch::Contains((dir.path() / "frames").string()));
+  CHECK_THAT(result.note, ContainsSubstring("ffmpeg not found") && ContainsSubstring("./kit deps") &&
+                              ContainsSubstring((dir.path() / "frames").string()));
   CHECK(kit::test::files_under(dir.path()).empty());
 }
 
@@ -408,6 +408,6 @@ TEST_CASE("with ffmpeg, encode_animation writes a non-empty MP4 and GIF and no t
   const auto failed = kit::encode_animation(dir.path() / "missing_%04d.png", 12, dir.path() / "bad.mp4",
                                             dir.path() / "bad.gif");
   CHECK(failed.files.empty());
-  CHECK_THAT(failed.note, Catch::Contains("exit status") && Catch::Contains("bad.mp4") && Catch::Contains("bad.gif"));
+  CHECK_THAT(failed.note, ContainsSubstring("exit status") && ContainsSubstring("bad.mp4") && ContainsSubstring("bad.gif"));
   CHECK(kit::test::files_under(dir.path()).size() == 6);
 }

@@ -1,6 +1,6 @@
 // Sprite scene files (sprite_scene_file.hpp): the shipped scenes load, absent keys keep their
 // defaults, and every mistake is a UsageError naming the file, the line and the dotted key.
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -10,7 +10,6 @@
 #include <kit/sprite_scene_file.hpp>
 #include <kit/usage.hpp>
 
-using Catch::Contains;
 
 namespace {
 
@@ -166,7 +165,7 @@ texture = "spark"
 [[emitter]]
 name = "a"
 texture = "sprak"
-)"), Contains("scenes/test.toml:4:") && Contains("emitter[0].texture") && Contains(".png"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].texture") && ContainsSubstring(".png"));
 }
 
 TEST_CASE("an unknown key names the file, its line, the key and the allowed keys", "[sprite-scene]") {
@@ -174,18 +173,18 @@ TEST_CASE("an unknown key names the file, its line, the key and the allowed keys
 frames = 10
 
 emiter = 3
-)"), Contains("scenes/test.toml:4:") && Contains("unknown key 'emiter'") && Contains("allowed: name, frames"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("unknown key 'emiter'") && ContainsSubstring("allowed: name, frames"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 speed = { mean = 1, varience = 2 }
-)"), Contains("scenes/test.toml:4:") && Contains("emitter[0].speed.varience") && Contains("mean, variance"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].speed.varience") && ContainsSubstring("mean, variance"));
   CHECK_THAT(error_of(R"(name = "t"
 [camera]
 fov = 30
 [[emitter]]
 name = "e"
-)"), Contains("scenes/test.toml:3:") && Contains("camera.fov'"));
+)"), ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("camera.fov'"));
 }
 
 TEST_CASE("a value of the wrong type names the file, its line, the key and both types", "[sprite-scene]") {
@@ -193,22 +192,22 @@ TEST_CASE("a value of the wrong type names the file, its line, the key and both 
 [[emitter]]
 name = "e"
 rate = { mean = "fast" }
-)"), Contains("scenes/test.toml:4:") && Contains("emitter[0].rate.mean") &&
-         Contains("expected a number, got a string"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].rate.mean") &&
+         ContainsSubstring("expected a number, got a string"));
   CHECK_THAT(error_of(R"(name = "t"
 frames = 12.5
 [[emitter]]
 name = "e"
-)"), Contains("scenes/test.toml:2:") && Contains("frames = 12.5") && Contains("expected an integer"));
+)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("frames = 12.5") && ContainsSubstring("expected an integer"));
   CHECK_THAT(error_of(R"(name = "t"
 background = [0, 0]
 [[emitter]]
 name = "e"
-)"), Contains("scenes/test.toml:2:") && Contains("background") && Contains("3 numbers"));
+)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("background") && ContainsSubstring("3 numbers"));
   CHECK_THAT(error_of(R"(name = "t"
 [emitter]
 name = "e"
-)"), Contains("scenes/test.toml:2:") && Contains("emitter") && Contains("[[emitter]]"));
+)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("emitter") && ContainsSubstring("[[emitter]]"));
 }
 
 TEST_CASE("an out-of-range value names the file, its line, the key, the value and the range", "[sprite-scene]") {
@@ -217,54 +216,54 @@ TEST_CASE("an out-of-range value names the file, its line, the key, the value an
 name = "e"
 shape = "cone"
 speed = { mean = 1, variance = -1 }
-)"), Contains("scenes/test.toml:5:") && Contains("emitter[0].speed.variance = -1: must be a finite number >= 0"));
+)"), ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[0].speed.variance = -1: must be a finite number >= 0"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 [[emitter]]
 name = "f"
 colour = [1, 2, 0.5]
-)"), Contains("scenes/test.toml:6:") && Contains("emitter[1].colour[1] = 2") && Contains("in [0, 1]"));
+)"), ContainsSubstring("scenes/test.toml:6:") && ContainsSubstring("emitter[1].colour[1] = 2") && ContainsSubstring("in [0, 1]"));
   CHECK_THAT(error_of(R"(name = "t"
 fps = nan
 [[emitter]]
 name = "e"
-)"), Contains("scenes/test.toml:2:") && Contains("fps = nan") && Contains("finite"));
+)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("fps = nan") && ContainsSubstring("finite"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 lifetime = { mean = 1, variance = 1 }
-)"), Contains("scenes/test.toml:4:") && Contains("emitter[0].lifetime") && Contains("(0, 1000000]"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].lifetime") && ContainsSubstring("(0, 1000000]"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 alpha = { mean = 0.8, variance = 0.3 }
-)"), Contains("scenes/test.toml:4:") && Contains("emitter[0].alpha") && Contains("[0, 1]"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].alpha") && ContainsSubstring("[0, 1]"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 first_frame = 10
 last_frame = 3
-)"), Contains("scenes/test.toml:5:") && Contains("emitter[0].last_frame = 3") && Contains("first_frame (10)"));
+)"), ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[0].last_frame = 3") && ContainsSubstring("first_frame (10)"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 axis = [0, 0, 0]
-)"), Contains("scenes/test.toml:4:") && Contains("emitter[0].axis") && Contains("zero"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].axis") && ContainsSubstring("zero"));
   CHECK_THAT(error_of(R"(name = "t"
 [death]
 region = { min = [0, 0, 0], max = [1, 0, 1] }
 [[emitter]]
 name = "e"
-)"), Contains("scenes/test.toml:3:") && Contains("death.region") && Contains("min must be < max"));
+)"), ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("death.region") && ContainsSubstring("min must be < max"));
 }
 
 TEST_CASE("a scene has 1 to 255 emitters", "[sprite-scene]") {
   CHECK_THAT(error_of("name = \"t\"\nemitter = []\n"),
-             Contains("scenes/test.toml:2:") && Contains("emitter = []") && Contains("got 0"));
+             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("emitter = []") && ContainsSubstring("got 0"));
   std::string many = "name = \"t\"\n";
   for (int i = 0; i < 256; ++i) many += "[[emitter]]\nname = \"e" + std::to_string(i) + "\"\n";
-  CHECK_THAT(error_of(many), Contains("scenes/test.toml:2:") && Contains("1 to 255") && Contains("got 256"));
+  CHECK_THAT(error_of(many), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("1 to 255") && ContainsSubstring("got 256"));
   many.resize(many.rfind("[[emitter]]"));
   CHECK(kit::parse_sprite_scene(many, "t.toml").emitters.size() == 255);
 }
@@ -274,13 +273,13 @@ TEST_CASE("a disc or sphere emitter without a positive radius is refused", "[spr
 [[emitter]]
 name = "e"
 shape = "disc"
-)"), Contains("scenes/test.toml:2:") && Contains("emitter[0].radius") && Contains("disc"));
+)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("emitter[0].radius") && ContainsSubstring("disc"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 shape = "sphere"
 radius = 0
-)"), Contains("scenes/test.toml:5:") && Contains("emitter[0].radius = 0") && Contains("sphere"));
+)"), ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[0].radius = 0") && ContainsSubstring("sphere"));
 }
 
 TEST_CASE("on_death naming no emitter, itself, or a loop is refused at its line", "[sprite-scene]") {
@@ -291,12 +290,12 @@ on_death = "bust"
 [[emitter]]
 name = "burst"
 burst_only = true
-)"), Contains("scenes/test.toml:4:") && Contains("emitter[0].on_death = \"bust\"") && Contains("shell, burst"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].on_death = \"bust\"") && ContainsSubstring("shell, burst"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "shell"
 on_death = "shell"
-)"), Contains("scenes/test.toml:4:") && Contains("emitter[0].on_death") && Contains("itself"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].on_death") && ContainsSubstring("itself"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "a"
@@ -304,7 +303,7 @@ on_death = "b"
 [[emitter]]
 name = "b"
 on_death = "a"
-)"), Contains("scenes/test.toml:4:") && Contains("emitter[0].on_death") && Contains("a -> b -> a"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].on_death") && ContainsSubstring("a -> b -> a"));
 }
 
 TEST_CASE("a burst_only emitter that no on_death names never emits and is refused", "[sprite-scene]") {
@@ -314,7 +313,7 @@ name = "shell"
 [[emitter]]
 name = "burst"
 burst_only = true
-)"), Contains("scenes/test.toml:6:") && Contains("emitter[1].burst_only") && Contains("never emits"));
+)"), ContainsSubstring("scenes/test.toml:6:") && ContainsSubstring("emitter[1].burst_only") && ContainsSubstring("never emits"));
 }
 
 TEST_CASE("two emitters with one name are refused: on_death could not tell them apart", "[sprite-scene]") {
@@ -323,7 +322,7 @@ TEST_CASE("two emitters with one name are refused: on_death could not tell them 
 name = "e"
 [[emitter]]
 name = "e"
-)"), Contains("scenes/test.toml:5:") && Contains("emitter[1].name") && Contains("unique"));
+)"), ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[1].name") && ContainsSubstring("unique"));
 }
 
 TEST_CASE("wind without drag is refused: it acts through drag", "[sprite-scene]") {
@@ -333,7 +332,7 @@ gravity = [0, -9.81, 0]
 wind = [1, 0, 0]
 [[emitter]]
 name = "e"
-)"), Contains("scenes/test.toml:4:") && Contains("forces.wind") && Contains("drag"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("forces.wind") && ContainsSubstring("drag"));
 }
 
 TEST_CASE("a TOML syntax error names the file and its line", "[sprite-scene]") {
@@ -341,25 +340,25 @@ TEST_CASE("a TOML syntax error names the file and its line", "[sprite-scene]") {
 [[emitter]]
 name = "e"
 rate = { mean = 3,
-)"), Contains("scenes/test.toml:4:") && Contains("TOML syntax error"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("TOML syntax error"));
 }
 
 TEST_CASE("a missing required key is reported at the line of its table", "[sprite-scene]") {
   CHECK_THAT(error_of(R"(frames = 3
 [[emitter]]
 name = "e"
-)"), Contains("scenes/test.toml:1:") && Contains("missing key 'name'"));
+)"), ContainsSubstring("scenes/test.toml:1:") && ContainsSubstring("missing key 'name'"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 rate = 3
-)"), Contains("scenes/test.toml:2:") && Contains("missing key 'emitter[0].name'"));
+)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("missing key 'emitter[0].name'"));
   CHECK_THAT(error_of(R"(name = "t"
-)"), Contains("scenes/test.toml:1:") && Contains("missing key 'emitter'"));
+)"), ContainsSubstring("scenes/test.toml:1:") && ContainsSubstring("missing key 'emitter'"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 size = { variance = 1 }
-)"), Contains("scenes/test.toml:4:") && Contains("missing key 'emitter[0].size.mean'"));
+)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("missing key 'emitter[0].size.mean'"));
 }
 
 TEST_CASE("a scene file that cannot be read is a UsageError naming it", "[sprite-scene]") {
@@ -369,6 +368,6 @@ TEST_CASE("a scene file that cannot be read is a UsageError naming it", "[sprite
   } catch (const kit::UsageError& e) {
     message = e.what();
   }
-  CHECK_THAT(message, Contains("cannot read scene file") && Contains("no-such-scene.toml"));
+  CHECK_THAT(message, ContainsSubstring("cannot read scene file") && ContainsSubstring("no-such-scene.toml"));
   CHECK_THROWS_AS(kit::load_sprite_scene(scene_dir), kit::UsageError);
 }

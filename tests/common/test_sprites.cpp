@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/drag_motion.hpp>
 #include <kit/emitter.hpp>

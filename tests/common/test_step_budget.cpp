@@ -1,5 +1,5 @@
 // A sweep over Δt = T/m within a budget of steps (step_budget.hpp).
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/step_budget.hpp>
 

@@ -1,5 +1,5 @@
 // The steps of the run a user asks for (step_count.hpp).
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/step_count.hpp>
 #include <kit/usage.hpp>
@@ -17,8 +17,8 @@ TEST_CASE("T/dt not whole, under one step or over the limit: a usage error namin
       kit::require_whole_steps(t_end, dt, 1'000'000);
       FAIL("no usage error");
     } catch (const kit::UsageError& e) {
-      CHECK_THAT(e.what(), Catch::Contains("--t-end") && Catch::Contains("--dt") &&
-                               Catch::Contains("from 1 to 1000000 steps"));
+      CHECK_THAT(e.what(), ContainsSubstring("--t-end") && ContainsSubstring("--dt") &&
+                               ContainsSubstring("from 1 to 1000000 steps"));
     }
   }
 }
@@ -28,14 +28,14 @@ TEST_CASE("a run past the limit is refused with the memory it would take") {
     kit::require_whole_steps(1e4, 1e-6, 1'000'000, 100.0);  // 1e10 steps of 100 B
     FAIL("no usage error");
   } catch (const kit::UsageError& e) {
-    CHECK_THAT(e.what(), Catch::Contains("--t-end 10000 s with --dt 1e-06 s is 1e+10 steps") &&
-                             Catch::Contains("recording them would take 1 TB") &&
-                             Catch::Contains("at most 1000000 steps, 100 MB, are recorded"));
+    CHECK_THAT(e.what(), ContainsSubstring("--t-end 10000 s with --dt 1e-06 s is 1e+10 steps") &&
+                             ContainsSubstring("recording them would take 1 TB") &&
+                             ContainsSubstring("at most 1000000 steps, 100 MB, are recorded"));
   }
   try {  // not whole, but within the limit: no estimate
     kit::require_whole_steps(1.0, 0.3, 1'000'000);
     FAIL("no usage error");
   } catch (const kit::UsageError& e) {
-    CHECK_THAT(e.what(), !Catch::Contains("recording"));
+    CHECK_THAT(e.what(), !ContainsSubstring("recording"));
   }
 }

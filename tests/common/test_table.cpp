@@ -1,6 +1,6 @@
 #include <sstream>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/table.hpp>
 

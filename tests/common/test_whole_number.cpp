@@ -1,6 +1,6 @@
 #include <climits>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/whole_number.hpp>
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/adaptive_rk_models.hpp>
 #include <kit/work_precision.hpp>

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/affine_system.hpp>
 #include <kit/spring.hpp>
@@ -14,7 +14,7 @@
 namespace kit::test {
 
 /// A generator seeded from Catch's --rng-seed, so a failing case can be replayed.
-inline std::mt19937_64 random_engine() { return std::mt19937_64(Catch::rngSeed()); }
+inline std::mt19937_64 random_engine() { return std::mt19937_64(kit::testing::seed()); }
 
 inline double uniform(std::mt19937_64& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);

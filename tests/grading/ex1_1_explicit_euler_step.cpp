@@ -1,7 +1,7 @@
 // ex 1.1: one explicit Euler step of u' = f(t, u), for any right-hand side (explicit_euler.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "explicit_euler.hpp"
 #include "cases.hpp"

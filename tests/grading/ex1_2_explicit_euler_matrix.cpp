@@ -1,7 +1,7 @@
 // ex 1.2: explicit Euler in matrix form, u_{k+1} = (I + Δt A) u_k + Δt b (explicit_euler.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "explicit_euler.hpp"
 #include "cases.hpp"

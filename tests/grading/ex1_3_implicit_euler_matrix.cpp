@@ -1,7 +1,7 @@
 // ex 1.3: implicit Euler in matrix form, (I − Δt A) u_{k+1} = u_k + Δt b (implicit_euler.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "implicit_euler.hpp"
 #include "cases.hpp"

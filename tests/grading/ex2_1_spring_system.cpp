@@ -1,5 +1,5 @@
 // ex 2.1: the spring as u' = A u + b (spring_system.hpp).
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/reference_solver.hpp>
 

@@ -1,7 +1,7 @@
 // ex 2.2: implicit Euler on the damped spring, solved by hand (implicit_euler_spring.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "implicit_euler_spring.hpp"
 #include "cases.hpp"

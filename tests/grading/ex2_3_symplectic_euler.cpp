@@ -1,7 +1,7 @@
 // ex 2.3: symplectic Euler, v first, then x with the new v (symplectic_euler.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "symplectic_euler.hpp"

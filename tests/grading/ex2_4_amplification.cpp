@@ -2,7 +2,7 @@
 #include <cmath>
 #include <complex>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "amplification.hpp"
 #include "cases.hpp"

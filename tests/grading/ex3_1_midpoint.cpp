@@ -1,7 +1,7 @@
 // ex 3.1: the midpoint Runge–Kutta step, as the lecture writes it (midpoint.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "midpoint.hpp"
 #include "cases.hpp"

@@ -1,7 +1,7 @@
 // ex 3.2 (bonus): the classical fourth-order Runge–Kutta step (rk4.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "rk4.hpp"

@@ -1,7 +1,7 @@
 // ex 4.2: one embedded Runge–Kutta step from a Butcher tableau (embedded_rk.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include <kit/reference_solver.hpp>
 #include <kit/adaptive_rk_models.hpp>

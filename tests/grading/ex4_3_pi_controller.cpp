@@ -2,7 +2,7 @@
 #include <cmath>
 #include <limits>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "pi_controller.hpp"

@@ -4,7 +4,7 @@
 #include <set>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "sprite_age_kill.hpp"

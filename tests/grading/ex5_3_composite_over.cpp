@@ -1,7 +1,7 @@
 // ex 5.3: one sprite composited "over" the image, clipped to it (sprite_over.hpp).
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "sprite_over.hpp"

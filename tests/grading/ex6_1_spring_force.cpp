@@ -1,7 +1,7 @@
 // ex 6.1: the force of one cloth spring on its end a (cloth_spring_force.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "cloth_spring_force.hpp"

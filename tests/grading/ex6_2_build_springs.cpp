@@ -5,7 +5,7 @@
 #include <set>
 #include <utility>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "cloth_springs.hpp"

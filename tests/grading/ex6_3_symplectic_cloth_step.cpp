@@ -2,7 +2,7 @@
 #include <cmath>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "cloth_step.hpp"

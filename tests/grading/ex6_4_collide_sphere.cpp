@@ -2,7 +2,7 @@
 // (cloth_sphere.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "cloth_sphere.hpp"

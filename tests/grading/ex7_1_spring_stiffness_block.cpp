@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include <Eigen/Eigenvalues>
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "cloth_jacobian.hpp"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "cloth_assembly.hpp"

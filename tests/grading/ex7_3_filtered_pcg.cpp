@@ -5,7 +5,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/IterativeLinearSolvers>
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "cloth_pcg.hpp"

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include <Eigen/Geometry>
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "rigid_cases.hpp"

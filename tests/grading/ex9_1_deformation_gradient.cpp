@@ -1,7 +1,7 @@
 // ex 9.1: the deformation gradient F = Ds Dm⁻¹ and Green's strain E = ½(FᵀF − I) (fem_strain.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "fem_cases.hpp"

@@ -2,7 +2,7 @@
 // (fem_stvk_forces.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "fem_cases.hpp"

@@ -1,7 +1,7 @@
 // ex 9.3: the element stiffness ∂f/∂x, 9×9 (fem_stvk_stiffness.hpp).
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "cases.hpp"
 #include "fem_cases.hpp"

@@ -20,7 +20,8 @@ The six submissions, generated from the solution markers:
                         hand, so no header gives it away), as a fork bomb would: the sandbox
                         kills the test at the first one (bounded to 64 harmless processes, so
                         that a sandbox without the filter does not hurt the machine)
-  and it ships a fake catch2/catch.hpp and kit/state.hpp that would make every check pass.
+  and it ships a fake Catch2 (catch2/catch.hpp, catch2/catch_all.hpp, catch2/catch_test_macros.hpp,
+  kit_catch.hpp) and kit/state.hpp that would make every check pass.
 Checks: class.csv is right; every attacked item scores 0 (integrity, compile error or fail);
 the untouched items still score; the compile error names the student's file and line;
 regrading writes the same reports byte for byte; nothing outside the grade trees changed.
@@ -37,6 +38,8 @@ import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
+# The headers a submission could plant to fake the test framework, under both Catch2 generations.
+CATCH_SHADOWS = ("catch2/catch.hpp", "catch2/catch_all.hpp", "catch2/catch_test_macros.hpp", "kit_catch.hpp")
 sys.path.insert(0, str(ROOT / "tools"))
 import exercises  # noqa: E402
 
@@ -126,7 +129,10 @@ def main(argv):
         '  while (n < 64 && posix_spawn(&pid, "/usr/bin/true", nullptr, nullptr, argv, argv + 1) == 0) ++n;\n'
         "  return n;\n"
         "}();\n"))
-    adversary["catch2/catch.hpp"] = "#pragma once\n#define TEST_CASE(...) void fake()\n#define CHECK(...)\n"
+    # Catch2 v2's one header, v3's, the kit's layer over both: none may stand in for the real ones.
+    fake_catch = "#pragma once\n#define TEST_CASE(...) void fake()\n#define CHECK(...)\n"
+    for shadow in CATCH_SHADOWS:
+        adversary[shadow] = fake_catch
     adversary["kit/state.hpp"] = "#pragma once\n"
     write(classroom / "adversary", adversary)
     tampered = {"amplification.hpp", "rk4.hpp", "symplectic_euler.hpp", "spring_system.hpp", "implicit_euler.hpp",
@@ -171,7 +177,7 @@ def main(argv):
         problems.append(f"adversary: the spawning ex {spawner['id']} was not stopped by the sandbox: "
                         f"{spawner['status']}: {spawner['message'][:200]}")
     ignored = {path for path, _ in report["ignored"]}
-    for shadow in ("catch2/catch.hpp", "kit/state.hpp"):
+    for shadow in (*CATCH_SHADOWS, "kit/state.hpp"):
         if shadow not in ignored:
             problems.append(f"adversary: {shadow} was not reported as ignored")
 

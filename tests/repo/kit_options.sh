@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ./kit never ignores what it is told: global options are honoured before or after the command,
-# a command refuses arguments it does not take (exit 2), and `run` never needs LaTeX.
+# a command refuses arguments it does not take (exit 2), and `run` needs neither LaTeX nor Catch2.
 set -uo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 failures=0
@@ -30,6 +30,14 @@ check "run needs no LaTeX package" 0 "$(./kit deps --for run --list | grep -c -e
 check "grade needs no LaTeX package" 0 "$(./kit deps --for grade --list | grep -c -e texlive -e latexmk)"
 [ "$(./kit deps --for slides --list | grep -c texlive)" -gt 0 ] || { echo "FAILED: slides must install texlive"; failures=$((failures + 1)); }
 check "ccache is never required" 0 "$(./kit deps --for test --list | grep -c ccache)"
+check "run needs no test framework" 0 "$(./kit deps --for run --list | grep -c catch2)"
+check "figures needs no test framework" 0 "$(./kit deps --for figures --list | grep -c catch2)"
+for command in test build grade evidence; do
+  check "$command needs Catch2" 1 "$(./kit deps --for "$command" --list | grep -cx catch2)"
+done
+check "deps --for an unknown command exits 2" 2 "$(exit_of ./kit deps --for frobnicate --list)"
+message=$(./kit deps --for frobnicate --list 2>&1 >/dev/null)
+[[ "$message" == *"--for 'frobnicate'"*"run figures build test"* ]] || { echo "FAILED: deps --for's refusal does not name the value and the choices: $message"; failures=$((failures + 1)); }
 
 echo "$failures failed"
 exit $((failures > 0))

@@ -105,6 +105,12 @@ def main(argv):
     # the way to the tree, nothing else. Next to the kit: nothing.
     top = {n for n in ("bin", "sbin", "lib", "lib32", "lib64", "libx32") if os.path.lexists(f"/{n}")}
     top |= {"usr", "etc", "dev", "proc", ROOT.parts[1], tree.parts[1]}  # no /tmp for a test
+    # The folders that must not be there, but for the way to the kit or to the tree; each folder on
+    # the way to the kit (below the top, above the kit's parent, whose other entries `elsewhere`
+    # checks) holds only the next step.
+    hidden_tops = [f"/{d}" for d in ("home", "root", "var", "run", "srv", "opt", "mnt", "media", "boot")
+                   if d not in (ROOT.parts[1], tree.parts[1])]
+    on_the_way = {pathlib.Path(*ROOT.parts[:depth]): [ROOT.parts[depth]] for depth in range(2, len(ROOT.parts) - 1)}
     elsewhere = [] if ROOT.parent == pathlib.Path("/") else sorted(
         p for p in ROOT.parent.iterdir() if p.name != ROOT.name and p not in tree.parents)[:20]
 
@@ -121,8 +127,10 @@ def main(argv):
          "done | wc -l", "0"),
         ("only the system, the kit and the tree at the top", "ls -A / | sort | tr '\\n' ' '",
          " ".join(sorted(top))),
-        ("no /home, /root, /var, /run, /srv, /opt, /mnt, /media, /boot",
-         "ls -d /home /root /var /run /srv /opt /mnt /media /boot 2>/dev/null | wc -l", "0"),
+        (f"no {', '.join(hidden_tops)}", f"ls -d {' '.join(hidden_tops)} 2>/dev/null | wc -l", "0"),
+        # A kit under /home/alice/ or /root/ brings that path into the sandbox, and only that path.
+        *[(f"{folder} holds only the way to the kit", f"ls -A {folder} | sort | tr '\\n' ' '", " ".join(names))
+          for folder, names in on_the_way.items()],
         ("no /etc/passwd, /etc/shadow, /etc/hostname", "cat /etc/passwd /etc/shadow /etc/hostname 2>/dev/null | wc -c",
          "0"),
         ("in /etc only the loader's files and the alternatives", "ls -A /etc | grep -cv '^ld\\.so\\.\\|^alternatives$'",

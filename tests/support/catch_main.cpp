@@ -5,8 +5,17 @@
 // expected case end with the expected number of assertions, then the end of the run: a process
 // that exits early, skips cases or silences its checks leaves that record incomplete.
 // The lines are written with write(2), unbuffered, so a crash keeps what came before it.
-#define CATCH_CONFIG_MAIN
-#include <catch2/catch.hpp>
+// The same file serves Catch2 v2 and v3 (support/kit_catch.hpp): main() is ours in both, so the
+// program's command line and exit codes are Catch::Session's.
+#define CATCH_CONFIG_RUNNER  // v2: the single header defines no main
+#include <kit_catch.hpp>
+
+#if KIT_CATCH2_MAJOR >= 3
+#include <catch2/catch_session.hpp>
+#include <catch2/catch_test_case_info.hpp>
+#include <catch2/reporters/catch_reporter_event_listener.hpp>
+#include <catch2/reporters/catch_reporter_registrars.hpp>
+#endif
 
 #include <unistd.h>
 
@@ -40,10 +49,16 @@ std::string one_line(std::string s) {
   return s;
 }
 
-struct EvidenceListener : Catch::TestEventListenerBase {
-  using TestEventListenerBase::TestEventListenerBase;
+#if KIT_CATCH2_MAJOR >= 3
+using ListenerBase = Catch::EventListenerBase;
+#else
+using ListenerBase = Catch::TestEventListenerBase;
+#endif
+
+struct EvidenceListener : ListenerBase {
+  using ListenerBase::ListenerBase;
   void testCaseEnded(const Catch::TestCaseStats& stats) override {
-    emit("case\t" + one_line(stats.testInfo.name) + "\t" + std::to_string(stats.totals.assertions.passed) + "\t" +
+    emit("case\t" + one_line(kit::testing::case_name(stats)) + "\t" + std::to_string(stats.totals.assertions.passed) + "\t" +
          std::to_string(stats.totals.assertions.failed) + "\n");
   }
   void testRunEnded(const Catch::TestRunStats& stats) override {
@@ -55,3 +70,5 @@ struct EvidenceListener : Catch::TestEventListenerBase {
 }  // namespace
 
 CATCH_REGISTER_LISTENER(EvidenceListener)
+
+int main(int argc, char* argv[]) { return Catch::Session().run(argc, argv); }

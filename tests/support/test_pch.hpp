@@ -18,4 +18,4 @@
 #include <Eigen/Dense>
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>

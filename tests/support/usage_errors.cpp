@@ -1,5 +1,5 @@
 // Shared by the chapter tests: bad input is a usage error that writes nothing.
-#include <catch2/catch.hpp>
+#include <kit_catch.hpp>
 
 #include "process.hpp"
 
@@ -16,7 +16,7 @@ void expect_usage_errors(const std::string& binary, const std::vector<BadInput>&
     for (const auto& arg : bad.args) command += arg + " ";
     INFO(command << "-> exit " << result.exit_code << ": " << result.err);
     CHECK(result.exit_code == 2);
-    CHECK_THAT(result.err, Catch::Contains(bad.names));
+    CHECK_THAT(result.err, ContainsSubstring(bad.names));
     CHECK(result.out.empty());
     CHECK_FALSE(std::filesystem::exists(target));
   }

@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# tests/platform/debian.sh RELEASE [STAGE...]: the README's two commands on a fresh install of a
+# Debian release, as a new user runs them. It installs a minimal root of RELEASE from Debian's
+# package archive (debootstrap), clones this kit's committed HEAD into it, and runs there, in
+# order, printing each stage's wall-clock time:
+#   run     ./kit run: every chapter, with only the chapters' packages (no Catch2 is installed)
+#   bench   ./kit bench cloth-implicit: installs Bullet into the tree `run` configured, then builds
+#           and runs that benchmark (a package a command installs serves that command at once)
+#   test    ./kit test: every test, as CI runs it (CI=true: warnings are errors)
+#   refused ./kit run on a release the kit cannot serve (bullseye, say): it must exit 2 with a
+#           message that names what is missing and why, never a CMake or compiler error
+# Default: run, bench and test. Needs root (debootstrap, mounts); the root's own / is the kit's machine,
+# entered by pivot_root in a private mount namespace (not chroot, in which bubblewrap, the
+# grader's sandbox, could not create its namespaces). Everything it mounts goes with that namespace.
+#
+# Environment: KIT_PLATFORM_DIR (default /var/tmp/kit-platform) holds RELEASE/ (the root, made
+# anew at every call) and RELEASE.figures/ (the chapters' data files, for compare_figures.py);
+# KIT_PLATFORM_MIRROR (default http://deb.debian.org/debian).
+# Example: tests/platform/debian.sh trixie && tests/platform/debian.sh bookworm &&
+#          tests/platform/compare_figures.py /var/tmp/kit-platform/{bookworm,trixie}.figures
+set -euo pipefail
+usage() { echo "usage: $0 RELEASE [run|bench|test|refused]...   (RELEASE: bookworm, trixie, ...)" >&2; exit 2; }
+(($# >= 1)) || usage
+release=$1
+shift
+[[ "$release" =~ ^[a-z]+$ ]] || { echo "debian.sh: RELEASE '$release': expected a Debian code name such as bookworm or trixie" >&2; exit 2; }
+stages=("$@")
+((${#stages[@]})) || stages=(run bench test)
+for stage in "${stages[@]}"; do
+  case "$stage" in run | bench | test) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test" >&2; exit 2 ;; esac
+done
+[ "$(id -u)" -eq 0 ] || { echo "debian.sh: needs root (debootstrap and mounts)" >&2; exit 2; }
+
+kit=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+top=${KIT_PLATFORM_DIR:-/var/tmp/kit-platform}
+mirror=${KIT_PLATFORM_MIRROR:-http://deb.debian.org/debian}
+root=$top/$release
+mkdir -p "$top"
+
+timed() {  # timed NAME COMMAND...: runs it, prints its time, fails the script when it fails
+  local name=$1 started=$SECONDS code=0
+  shift
+  printf '\n=== %s: %s ===\n' "$release" "$name"
+  "$@" || code=$?
+  printf '=== %s: %s: %s in %d s ===\n' "$release" "$name" "$([ $code -eq 0 ] && echo passed || echo "FAILED (exit $code)")" \
+    $((SECONDS - started))
+  return $code
+}
+
+install_root() {
+  command -v debootstrap >/dev/null || { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap >/dev/null; }
+  [ -e /usr/share/debootstrap/scripts/"$release" ] || { echo "debian.sh: this debootstrap does not know '$release'" >&2; exit 2; }
+  rm -rf "$root"
+  debootstrap --variant=minbase --include=ca-certificates,git "$release" "$root" "$mirror" >"$top/$release.debootstrap.log" 2>&1 ||
+    { tail -20 "$top/$release.debootstrap.log"; return 1; }
+  cp /etc/resolv.conf "$root/etc/resolv.conf"
+  # The committed kit, as a clone of it is.
+  git clone -q "$kit" "$root/root/kit"
+  git -C "$root/root/kit" log -1 --format='kit at %h: %s'
+}
+
+# inside COMMAND: runs COMMAND (a bash script) in the root, as root, from the kit's folder.
+inside() {
+  unshare --mount --propagation private --fork bash -euc '
+    root=$1; shift
+    mount --bind "$root" "$root"
+    mount -t proc proc "$root/proc"
+    mount --rbind /sys "$root/sys"
+    mount --rbind /dev "$root/dev"
+    mkdir -p "$root/.host"
+    cd "$root"
+    pivot_root . .host
+    umount -l /.host
+    exec /usr/sbin/chroot / /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb CI=true \
+      PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin bash -euc "cd /root/kit && $1"
+  ' inside "$root" "$1"
+}
+
+timed "a fresh $release root from Debian's archive" install_root
+inside '. /etc/os-release; echo "$PRETTY_NAME"'
+for stage in "${stages[@]}"; do
+  case "$stage" in
+    run)
+      timed "./kit run" inside './kit run >/root/kit-run.log 2>&1 || { tail -40 /root/kit-run.log; exit 1; }; tail -3 /root/kit-run.log'
+      # A student who only runs chapters installs no test framework.
+      inside 'if dpkg -s catch2 >/dev/null 2>&1; then echo "./kit run installed catch2"; exit 1; fi; echo "no catch2 after ./kit run"'
+      rm -rf "$top/$release.figures"
+      cp -r "$root/root/kit/build/figures" "$top/$release.figures"
+      ;;
+    bench)
+      timed "./kit bench cloth-implicit (installs Bullet into the tree run configured)" \
+        inside './kit bench cloth-implicit >/root/kit-bench.log 2>&1 || { tail -40 /root/kit-bench.log; exit 1; }; grep -c "" /root/kit-bench.log; grep -m3 -i bullet /root/kit-bench.log'
+      ;;
+    test)
+      timed "./kit test" inside './kit test >/root/kit-test.log 2>&1 || { grep -E "tests passed|tests failed|\*\*\*Failed|Timeout|Not Run" /root/kit-test.log | tail -40; exit 1; }; tail -4 /root/kit-test.log'
+      ;;
+    refused)
+      timed "./kit run is refused with exit 2 and a reason" inside '
+        code=0; ./kit run >/root/kit-run.log 2>&1 || code=$?
+        grep "^kit:" /root/kit-run.log | tail -12
+        if grep -q "CMake Error" /root/kit-run.log; then echo "a CMake error reached the user"; exit 1; fi
+        [ "$code" -eq 2 ] || { echo "exit $code, not 2"; tail -20 /root/kit-run.log; exit 1; }
+        grep -q -e "still missing" -e "older than" /root/kit-run.log || { echo "no reason given"; exit 1; }'
+      ;;
+  esac
+done
+inside 'for p in g++ cmake catch2 libboost-dev libgsl-dev gnuplot-nox libfmt-dev libcli11-dev libtomlplusplus-dev libeigen3-dev nlohmann-json3-dev libstb-dev python3 bubblewrap texlive-latex-recommended clang libbullet-dev; do
+          printf "%-28s %s\n" "$p" "$(dpkg-query -W -f="\${Version}" "$p" 2>/dev/null || echo "(not installed)")"; done' \
+  | tee "$top/$release.versions"
