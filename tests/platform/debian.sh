@@ -27,7 +27,7 @@ shift
 stages=("$@")
 ((${#stages[@]})) || stages=(run bench test)
 for stage in "${stages[@]}"; do
-  case "$stage" in run | bench | test) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test" >&2; exit 2 ;; esac
+  case "$stage" in run | bench | test | refused) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test refused" >&2; exit 2 ;; esac
 done
 [ "$(id -u)" -eq 0 ] || { echo "debian.sh: needs root (debootstrap and mounts)" >&2; exit 2; }
 
