@@ -7,6 +7,9 @@
 #   bench   ./kit bench cloth-implicit: installs Bullet into the tree `run` configured, then builds
 #           and runs that benchmark (a package a command installs serves that command at once)
 #   test    ./kit test: every test, as CI runs it (CI=true: warnings are errors)
+#   grades  ./kit grade of solutions/, exercises/ and a partly solved copy (five exercises solved,
+#           ex 3.2 with a wrong weight): class.csv and every grade.json, kept in RELEASE.grades/ to
+#           be compared with another release's (the same points under Catch2 v2 and v3)
 #   refused ./kit run on a release the kit cannot serve (bullseye, say): it must exit 2 with a
 #           message that names what is missing and why, never a CMake or compiler error
 # Default: run, bench and test. Needs root (debootstrap, mounts); the root's own / is the kit's machine,
@@ -19,7 +22,7 @@
 # Example: tests/platform/debian.sh trixie && tests/platform/debian.sh bookworm &&
 #          tests/platform/compare_figures.py /var/tmp/kit-platform/{bookworm,trixie}.figures
 set -euo pipefail
-usage() { echo "usage: $0 RELEASE [run|bench|test|refused]...   (RELEASE: bookworm, trixie, ...)" >&2; exit 2; }
+usage() { echo "usage: $0 RELEASE [run|bench|test|grades|refused]...   (RELEASE: bookworm, trixie, ...)" >&2; exit 2; }
 (($# >= 1)) || usage
 release=$1
 shift
@@ -27,7 +30,7 @@ shift
 stages=("$@")
 ((${#stages[@]})) || stages=(run bench test)
 for stage in "${stages[@]}"; do
-  case "$stage" in run | bench | test | refused) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test refused" >&2; exit 2 ;; esac
+  case "$stage" in run | bench | test | grades | refused) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test grades refused" >&2; exit 2 ;; esac
 done
 [ "$(id -u)" -eq 0 ] || { echo "debian.sh: needs root (debootstrap and mounts)" >&2; exit 2; }
 
@@ -93,6 +96,19 @@ for stage in "${stages[@]}"; do
       ;;
     test)
       timed "./kit test" inside './kit test >/root/kit-test.log 2>&1 || { grep -E "tests passed|tests failed|\*\*\*Failed|Timeout|Not Run" /root/kit-test.log | tail -40; exit 1; }; tail -4 /root/kit-test.log'
+      ;;
+    grades)
+      timed "./kit grade solutions/, exercises/ and a partly solved copy" inside '
+        rm -rf /root/partly && cp -r exercises /root/partly
+        for f in midpoint sprite_emit cloth_pcg fem_strain rigid_exponential_map; do cp solutions/$f.hpp /root/partly/; done
+        sed "s|(dt / 6) \* (k1 + 2 \* k2|(dt / 6) * (k1 + 3 * k2|" solutions/rk4.hpp >/root/partly/rk4.hpp
+        grep -q "k1 + 3 \* k2" /root/partly/rk4.hpp || { echo "the wrong ex 3.2 was not made"; exit 1; }
+        ./kit grade --out /root/grades solutions exercises /root/partly >/root/kit-grade.log 2>&1 ||
+          { tail -30 /root/kit-grade.log; exit 1; }
+        tail -5 /root/kit-grade.log'
+      rm -rf "$top/$release.grades"
+      mkdir -p "$top/$release.grades"
+      (cd "$root/root/grades" && cp --parents class.csv */grade.json "$top/$release.grades/")
       ;;
     refused)
       timed "./kit run is refused with exit 2 and a reason" inside '
