@@ -7,6 +7,8 @@
 #   bench   ./kit bench cloth-implicit: installs Bullet into the tree `run` configured, then builds
 #           and runs that benchmark (a package a command installs serves that command at once)
 #   test    ./kit test: every test, as CI runs it (CI=true: warnings are errors)
+#   sanitizers  ./kit --preset asan-ubsan build with the release's clang (installed by the kit),
+#           then ./kit fuzz 30
 #   grades  ./kit grade of solutions/, exercises/ and a partly solved copy (five exercises solved,
 #           ex 3.2 with its weights over 5): class.csv and every grade.json, kept in RELEASE.grades/ to
 #           be compared with another release's (the same points under Catch2 v2 and v3)
@@ -22,7 +24,7 @@
 # Example: tests/platform/debian.sh trixie && tests/platform/debian.sh bookworm &&
 #          tests/platform/compare_figures.py /var/tmp/kit-platform/{bookworm,trixie}.figures
 set -euo pipefail
-usage() { echo "usage: $0 RELEASE [run|bench|test|grades|refused]...   (RELEASE: bookworm, trixie, ...)" >&2; exit 2; }
+usage() { echo "usage: $0 RELEASE [run|bench|test|sanitizers|grades|refused]...   (RELEASE: bookworm, trixie, ...)" >&2; exit 2; }
 (($# >= 1)) || usage
 release=$1
 shift
@@ -30,7 +32,7 @@ shift
 stages=("$@")
 ((${#stages[@]})) || stages=(run bench test)
 for stage in "${stages[@]}"; do
-  case "$stage" in run | bench | test | grades | refused) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test grades refused" >&2; exit 2 ;; esac
+  case "$stage" in run | bench | test | sanitizers | grades | refused) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test sanitizers grades refused" >&2; exit 2 ;; esac
 done
 [ "$(id -u)" -eq 0 ] || { echo "debian.sh: needs root (debootstrap and mounts)" >&2; exit 2; }
 
@@ -96,6 +98,12 @@ for stage in "${stages[@]}"; do
       ;;
     test)
       timed "./kit test" inside './kit test >/root/kit-test.log 2>&1 || { grep -E "tests passed|tests failed|\*\*\*Failed|Timeout|Not Run" /root/kit-test.log | tail -40; exit 1; }; tail -4 /root/kit-test.log'
+      ;;
+    sanitizers)
+      timed "./kit --preset asan-ubsan build (the release's clang), then ./kit fuzz 30" inside '
+        { ./kit --preset asan-ubsan build && ./kit fuzz 30; } >/root/kit-sanitizers.log 2>&1 ||
+          { grep -E "error|warning" /root/kit-sanitizers.log | head -20; tail -20 /root/kit-sanitizers.log; exit 1; }
+        clang++ --version | head -1; grep -c "warning:" /root/kit-sanitizers.log || true; grep "^kit:" /root/kit-sanitizers.log | tail -4'
       ;;
     grades)
       timed "./kit grade solutions/, exercises/ and a partly solved copy" inside '
