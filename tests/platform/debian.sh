@@ -19,7 +19,7 @@
 # grader's sandbox, could not create its namespaces). Everything it mounts goes with that namespace.
 #
 # Environment: KIT_PLATFORM_DIR (default /var/tmp/kit-platform) holds RELEASE/ (the root, made
-# anew at every call) and RELEASE.figures/ (the chapters' data files, for compare_figures.py);
+# anew at every call unless KIT_PLATFORM_REUSE=yes) and RELEASE.figures/ (the chapters' data files, for compare_figures.py);
 # KIT_PLATFORM_MIRROR (default http://deb.debian.org/debian).
 # Example: tests/platform/debian.sh trixie && tests/platform/debian.sh bookworm &&
 #          tests/platform/compare_figures.py /var/tmp/kit-platform/{bookworm,trixie}.figures
@@ -61,7 +61,7 @@ install_root() {
   cp /etc/resolv.conf "$root/etc/resolv.conf"
   # The committed kit, as a clone of it is.
   git clone -q "$kit" "$root/root/kit"
-  git -C "$root/root/kit" log -1 --format='kit at %h: %s'
+  git -C "$root/root/kit" log -1 --format='kit at %h'
 }
 
 # inside COMMAND: runs COMMAND (a bash script) in the root, as root, from the kit's folder.
@@ -81,7 +81,14 @@ inside() {
   ' inside "$root" "$1"
 }
 
-timed "a fresh $release root from Debian's archive" install_root
+# KIT_PLATFORM_REUSE=yes keeps a root made before, with what it installed and built, and brings its
+# clone to this kit's HEAD: for more stages on the same root. A fresh root is the real test.
+if [ "${KIT_PLATFORM_REUSE:-}" = yes ] && [ -d "$root/root/kit/.git" ]; then
+  git -C "$root/root/kit" fetch -q "$kit" HEAD && git -C "$root/root/kit" reset -q --hard FETCH_HEAD
+  git -C "$root/root/kit" log -1 --format="reusing the $release root; kit at %h: %s"
+else
+  timed "a fresh $release root from Debian's archive" install_root
+fi
 inside '. /etc/os-release; echo "$PRETTY_NAME"'
 for stage in "${stages[@]}"; do
   case "$stage" in
