@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -13,6 +12,7 @@
 #include <gnuplot-iostream.h>
 
 #include <kit/atomic_file.hpp>
+#include <kit/pdf_creation_date.hpp>
 
 namespace kit {
 
@@ -174,36 +174,6 @@ std::string read_file(const std::filesystem::path& path) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-// With SOURCE_DATE_EPOCH set (reproducible builds), a PDF's creation date becomes that time, so
-// that two renders of the same figure are byte-identical: cairo 1.16, which gnuplot's pdfcairo
-// uses, always writes the clock's. The date keeps its length (YYYYMMDDHHmmSS then "Z", "+00'00"
-// or "+00'00'"), so the cross-reference offsets stay right; any other form is left alone.
-void pin_pdf_creation_date(const std::filesystem::path& pdf) {
-  const char* epoch_text = std::getenv("SOURCE_DATE_EPOCH");
-  if (!epoch_text) return;
-  char* end = nullptr;
-  const long long epoch = std::strtoll(epoch_text, &end, 10);
-  if (end == epoch_text || *end != '\0' || epoch < 0 || epoch > 253402300799LL) return;  // up to year 9999
-  std::string bytes = read_file(pdf);
-  const std::string key = "/CreationDate (D:";
-  const auto at = bytes.find(key);
-  if (at == std::string::npos) return;
-  const auto start = at + key.size(), close = bytes.find(')', start);
-  if (close == std::string::npos) return;
-  const std::time_t seconds = std::time_t(epoch);
-  std::tm utc{};
-  gmtime_r(&seconds, &utc);
-  const std::string stamp = fmt::format("{:04}{:02}{:02}{:02}{:02}{:02}", utc.tm_year + 1900, utc.tm_mon + 1,
-                                        utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec);
-  const std::size_t length = close - start;
-  // cairo writes "Z" in UTC and "+HH'MM" elsewhere; some writers close with a last "'".
-  const std::string date = length == 15 ? stamp + "Z" : length == 20 ? stamp + "+00'00"
-                           : length == 21 ? stamp + "+00'00'" : "";
-  if (date.empty()) return;
-  bytes.replace(start, length, date);
-  std::ofstream(pdf, std::ios::binary | std::ios::trunc) << bytes;
 }
 
 }  // namespace
