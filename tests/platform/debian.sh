@@ -135,6 +135,8 @@ for stage in "${stages[@]}"; do
       ;;
   esac
 done
-inside 'for p in g++ cmake catch2 libboost-dev libgsl-dev gnuplot-nox libfmt-dev libcli11-dev libtomlplusplus-dev libeigen3-dev nlohmann-json3-dev libstb-dev python3 bubblewrap texlive-latex-recommended clang libbullet-dev; do
+inside 'for p in g++ clang cmake ninja-build catch2 libboost-dev libgsl-dev gnuplot-nox libcairo2 libfmt-dev libcli11-dev \
+          libtomlplusplus-dev libeigen3-dev nlohmann-json3-dev libstb-dev python3 bubblewrap texlive-latex-recommended \
+          poppler-utils libbullet-dev zlib1g; do
           printf "%-28s %s\n" "$p" "$(dpkg-query -W -f="\${Version}" "$p" 2>/dev/null || echo "(not installed)")"; done' \
   | tee "$top/$release.versions"
