@@ -41,12 +41,7 @@ json run_chapter(std::vector<std::string> args) {
   args.push_back("--no-plot");
   return run_chapter(args, out.path());
 }
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using kit::test::slurp;
 fs::path write_scene(const fs::path& dir, const std::string& name, const std::string& text) {
   std::ofstream(dir / name) << text;
   return dir / name;

@@ -11,12 +11,7 @@
 #include "process.hpp"
 
 namespace {
-std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using kit::test::slurp;
 
 kit::Figure sample_figure() {
   kit::Figure fig("sample", "A sample figure");

@@ -14,12 +14,7 @@
 
 namespace {
 
-std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using kit::test::slurp;
 
 // The creation date as the PDF holds it: in plain text (cairo 1.16) or in a compressed object
 // stream (cairo 1.18); "" when there is none.

@@ -76,6 +76,14 @@ class TempDir {
   std::filesystem::path path_;
 };
 
+/// The whole file at `path`, as bytes; "" when it cannot be read.
+inline std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
 /// Files (not folders) under `dir`, recursively; empty when `dir` does not exist.
 inline std::vector<std::filesystem::path> files_under(const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> files;
