@@ -66,11 +66,15 @@ std::optional<StreamObject> stream_at(const std::string& pdf, std::size_t from) 
     if (at == std::string::npos) return std::nullopt;
     at = pdf.find_first_not_of(" \n\r", at + header.size());
     if (at == std::string::npos) return std::nullopt;
+    const auto end = pdf.find_first_not_of("0123456789", at);
+    if (end == std::string::npos) return std::nullopt;
     s.length_at = at;
-    s.length_digits = pdf.find_first_not_of("0123456789", at) - at;
+    s.length_digits = end - at;
   }
+  // No digits, or too many to be a length here: not a stream this knows (stoul would throw).
+  if (s.length_digits == 0 || s.length_digits > 12) return std::nullopt;
   s.length = std::stoul(pdf.substr(s.length_at, s.length_digits));
-  if (s.length_digits == 0 || s.data + s.length > pdf.size()) return std::nullopt;
+  if (s.data + s.length > pdf.size()) return std::nullopt;
   return s;
 }
 

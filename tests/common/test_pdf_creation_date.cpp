@@ -131,6 +131,15 @@ TEST_CASE("a compressed creation date (cairo 1.18) is set, and every offset behi
   CHECK(kit::with_pdf_creation_date(*pinned, 0) == pinned);
 }
 
+TEST_CASE("a PDF whose object stream has no length it can read is left alone, without throwing") {
+  std::string pdf = cairo_118_pdf("20261127081022Z");
+  const auto length = pdf.find("4 0 obj\n   ");
+  REQUIRE(length != std::string::npos);
+  pdf[length + 11] = 'x';  // the length object no longer starts with a digit
+  CHECK_FALSE(kit::with_pdf_creation_date(pdf, 0));
+  CHECK_FALSE(kit::with_pdf_creation_date("/Type /ObjStm /Length 4 0 R >>\nstream\n", 0));
+}
+
 TEST_CASE("a figure's PDF rendered by this system's gnuplot and cairo gets SOURCE_DATE_EPOCH's date") {
   kit::test::TempDir dir("pdf-date");
   kit::FigureOptions options;
