@@ -1,61 +1,97 @@
 #!/usr/bin/env python3
 """Grade student folders: `./kit grade` calls `grade.py batch`.
 
-For each folder, in its own grade tree OUT/NAME/:
-  1. copy the exercise files named in points.json, and nothing else, into OUT/NAME/src/
-     (grading/submission.py); statically check them (grading/static_check.py);
-  2. configure and build the graded programs against that copy, inside the sandbox
-     (grading/sandbox.py), one program per exercise, `ninja -k 0` so a file that does not compile
-     costs only the exercises written in it; they link the kit's library as `./kit` built it once
-     for the batch (--common-library), and the Catch2 main and precompiled header (Catch2, Eigen)
-     that OUT/.grading-shared/ builds once for the batch from the kit's code alone, read-only in
-     every sandbox: a tree compiles only its graded programs;
-  3. run each graded program inside the sandbox, with a memory limit, a timeout (wall clock and
-     CPU seconds) and no right to start a process, and read the evidence it writes on a channel
-     the grader opened (grading/evidence.py);
-  4. write grade.json, grade.md, grade.junit.xml; then class.csv and class.md for the batch
-     (grading/reports.py). Reports are written here, outside the sandbox, never by a test.
+Student code computes, it never judges. Each exercise is graded by two processes:
+  - the judge (build/tests/grade_exN_k): the graded test, compiled from the kit's sources alone
+    (tests/grading/remote/judge.hpp). It runs no student code and reaches the verdict;
+  - the student's program: the student's exercise file, the kit headers points.json allows that
+    exercise, a harness (tests/grading/harness/) and a loop that answers the judge's calls. It is
+    compiled and run in the sandbox (grading/sandbox.py) and only returns values.
+The two talk over a pair of pipes; the judge checks what comes back.
 
-`grade.py record-evidence BUILD_DIR` runs the reference (solutions/) graded programs of a build
-and writes tests/grading/expected_evidence.json: the test cases of each exercise and their
-assertion counts, which a submission's run must match.
+A batch:
+  1. prepares OUT/.grading-shared/, before any student's code is compiled: the judges, the
+     harness sources, each exercise's allowed headers and kit objects, the program loop library;
+  2. draws a seed (or takes --seed, to regrade): every judge draws its random cases from it, and
+     every report records it;
+  3. grades the folders side by side (--jobs): copy the exercise files and nothing else
+     (grading/submission.py), check them statically (grading/static_check.py), compile each
+     distinct file once, keyed by its content (identical copies and untouched placeholders are
+     compiled once per batch), run each exercise's judge against its program;
+  4. writes grade.json, grade.md, grade.junit.xml per folder and class.csv, class.md for the batch
+     (grading/reports.py), and removes everything else it made.
+A student costs only their own grade: each compile and run has CPU, memory, file-size and time
+limits; a student's compiles and runs share a time budget (--student-time) and a disk budget;
+a student's output is capped; grade trees keep only the reports.
+
+`grade.py record-evidence BUILD_DIR` runs the reference judges against the reference programs
+and writes tests/grading/expected_evidence.json: each exercise's test cases and assertion counts.
 """
 import argparse
-import filecmp
+import concurrent.futures
 import hashlib
-import math
 import json
+import math
 import os
 import pathlib
-import random
+import queue
 import re
+import secrets
 import shutil
 import signal
 import subprocess
 import sys
 import tempfile
+import threading
+import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from grading import build_log, evidence, reports, static_check, submission  # noqa: E402
-from grading.sandbox import BUILD_LIMITS, Sandbox, SandboxUnavailable, test_limits  # noqa: E402
+from grading.sandbox import BUILD_MEMORY, Limits, Sandbox, SandboxUnavailable, test_limits  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 POINTS = ROOT / "tests" / "grading" / "points.json"
 EXPECTED = ROOT / "tests" / "grading" / "expected_evidence.json"
-SEED = "20261121"  # the same --rng-seed the CTest entries use
+REFERENCE_SEED = "20261121"  # the seed ctest and record-evidence use
+SHARED = ".grading-shared"
+
+COMPILE_LIMITS = Limits(BUILD_MEMORY, 120, True)  # one student file: 120 CPU seconds (the heaviest takes 3)
+COMPILE_WALL = 300            # seconds, one compile
+COMPILE_FILE_BYTES = 64 << 20  # any one file a compile writes (object, program)
+RUN_FILE_BYTES = 1 << 20       # what a student's program may write (its output)
+JUDGE_MEMORY = 4 << 30        # bytes of address space for a judge
+KEPT_BYTES = 64 << 10          # of each log and output, what the reports folder keeps
+STUDENT_DISK = 512 << 20       # bytes of compiled programs one student may add to the batch
+# The student's programs are compiled at -O1: a grade is compile-bound, and without -ffast-math the
+# optimisation level changes no floating-point result. The defines are the kit library's own.
+COMPILE_FLAGS = ["-std=c++20", "-O1", "-DNDEBUG", "-DEIGEN_UNALIGNED_VECTORIZE=0", "-DFMT_SHARED", "-pipe",
+                 "-fdiagnostics-color=never", "-fmax-errors=10"]
 
 
 def target(ident):
     return "grade_ex" + ident.replace(".", "_")
 
 
-OUTPUT_BYTES = 16 << 20  # what a graded process may write, output and evidence alike
+def stem_of(exercise):
+    return exercise["file"].removesuffix(".hpp")
 
 
-def run_limited(command, timeout, **kwargs):
-    """Runs `command` in its own session, stdin closed, its output into a temporary file (a
-    flood cannot exhaust the grader's memory; RLIMIT_FSIZE caps it inside the sandbox); on
-    timeout kills the whole group. Returns (returncode or None on timeout, output text)."""
+def died_of(code, sig):
+    """Whether a run ended by `sig`: bare, a negative return code; under bwrap, 128 + the signal."""
+    return code is not None and code in (-sig, 128 + sig)
+
+
+def keep_tail(path, text):
+    """Writes at most KEPT_BYTES of `text` to `path`."""
+    if len(text) > KEPT_BYTES:
+        text = text[:KEPT_BYTES] + f"\n[… cut at {KEPT_BYTES} bytes]\n"
+    path.write_text(text, encoding="utf-8")
+
+
+def run_capped(command, timeout, **kwargs):
+    """Runs `command` in its own session, stdin closed, output into a temporary file (a flood
+    cannot exhaust the grader's memory); on timeout kills its whole group.
+    Returns (returncode or None on timeout, the first megabyte of output)."""
     with tempfile.TemporaryFile() as sink:
         process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=sink, stderr=subprocess.STDOUT,
                                    start_new_session=True, **kwargs)
@@ -66,198 +102,291 @@ def run_limited(command, timeout, **kwargs):
             process.wait()
             code = None
         sink.seek(0)
-        return code, sink.read(OUTPUT_BYTES).decode("utf-8", errors="replace")
+        return code, sink.read(RUN_FILE_BYTES).decode("utf-8", errors="replace")
 
 
-def evidence_fd_for(path):
-    """The descriptor number of a run's evidence channel: fixed for a path, different across trees."""
-    return random.Random(str(path)).randrange(10, 200)
+def digest(*parts):
+    h = hashlib.sha256()
+    for part in parts:
+        h.update(part if isinstance(part, bytes) else str(part).encode())
+        h.update(b"\0")
+    return h.hexdigest()
 
 
-def run_with_evidence(command, evidence_path, fd_number, timeout):
-    """Runs a graded program with the evidence channel, a capped file, open as `fd_number`.
-    The command carries KIT_EVIDENCE_FD itself (the sandbox clears the environment)."""
-    with open(evidence_path, "wb") as sink:
-        os.dup2(sink.fileno(), fd_number)
+class Batch:
+    """What every student of a batch shares, built from the kit's code alone before any student's."""
+
+    def __init__(self, out, judges, library, sandbox, points, seed, timeout, student_time, jobs):
+        self.out, self.sandbox, self.points = out, sandbox, points
+        self.seed, self.timeout, self.student_time = seed, timeout, student_time
+        self.shared = out / SHARED
+        if self.shared.exists():
+            shutil.rmtree(self.shared)
+        self.programs = self.shared / "programs"
+        self.programs.mkdir(parents=True)
+        self.judges = self.shared / "judges"
+        self.judges.mkdir()
+        for exercise in points["exercises"]:
+            shutil.copy2(pathlib.Path(judges) / target(exercise["id"]), self.judges / target(exercise["id"]))
+        grading = ROOT / "tests" / "grading"
+        self.harness = self.shared / "harness"
+        shutil.copytree(grading / "remote", self.harness / "remote",
+                        ignore=shutil.ignore_patterns("*.cpp"))
+        shutil.copytree(grading / "harness", self.harness / "harness")
+        self.loop = self.shared / "libkit_remote_student.a"
+        shutil.copy2(pathlib.Path(judges) / "libkit_remote_student.a", self.loop)
+        # Each exercise file's headers and objects: the kit as that exercise may see it, no more.
+        self.allowed = {}
+        objects_dir = self.shared / "objects"
+        objects_dir.mkdir()
+        wanted = sorted({s + ".o" for e in points["exercises"] for s in e.get("sources", [])})
+        if wanted:
+            subprocess.run(["ar", "x", str(pathlib.Path(library).resolve()), *wanted], cwd=objects_dir, check=True)
+        include = ROOT / "common" / "include"
+        for exercise in points["exercises"]:
+            stem = stem_of(exercise)
+            if stem in self.allowed:
+                continue
+            folder = self.shared / "include" / stem
+            for header in exercise["headers"]:
+                (folder / header).parent.mkdir(parents=True, exist_ok=True)
+                shutil.copy2(include / header, folder / header)
+            self.allowed[stem] = (folder, [objects_dir / (s + ".o") for s in exercise.get("sources", [])])
+        # The standard library and Eigen, precompiled here from the kit's header alone: half a compile.
+        self.pch = self.harness / "remote" / "student_pch.hpp"
+        made = subprocess.run(["c++", *COMPILE_FLAGS, "-isystem", "/usr/include/eigen3", "-x", "c++-header",
+                               str(self.pch), "-o", str(self.pch) + ".gch"], capture_output=True, text=True)
+        if made.returncode != 0:
+            print(f"grade: no precompiled header (each compile is slower): {made.stderr[:300]}", file=sys.stderr)
+        compiler = subprocess.run(["c++", "--version"], capture_output=True, text=True).stdout
+        self.inputs = digest(compiler, " ".join(COMPILE_FLAGS),
+                             *[p.read_bytes() for p in sorted(self.shared.rglob("*")) if p.is_file()
+                               and self.programs not in p.parents and self.judges not in p.parents])
+        self.locks, self.locks_guard = {}, threading.Lock()
+        self.runs, self.runs_guard = {}, threading.Lock()
+        self.compile_width = 1  # compiles per student at once: set by the batch, from --jobs and its size
+        self.cpus = queue.Queue()
+        for cpu in sorted(os.sched_getaffinity(0)):
+            self.cpus.put(cpu)
+
+    def lock(self, key):
+        with self.locks_guard:
+            return self.locks.setdefault(key, threading.Lock())
+
+    def compile(self, stem, source_text):
+        """The student's program for one exercise file, compiled once per distinct content in the
+        sandbox. Returns (program path or None, compile log, bytes it added to the disk)."""
+        key = digest(self.inputs, stem, source_text)
+        entry = self.programs / key
+        with self.lock(key):
+            if (entry / "done").exists():
+                return (entry / "program" if (entry / "program").exists() else None), \
+                    (entry / "compile.log").read_text(encoding="utf-8", errors="replace"), 0
+            work = self.programs / (key + ".work")
+            if work.exists():
+                shutil.rmtree(work)
+            (work / "src").mkdir(parents=True)
+            (work / "src" / f"{stem}.hpp").write_text(source_text, encoding="utf-8")
+            include, objects = self.allowed[stem]
+            command = ["c++", *COMPILE_FLAGS, "-include", str(self.pch), "-iquote", str(work / "src"), "-iquote", str(self.harness),
+                       "-I", str(include), "-isystem", "/usr/include/eigen3",
+                       str(self.harness / "harness" / f"{stem}.cpp"), *map(str, objects), str(self.loop), "-lfmt",
+                       "-o", str(work / "program")]
+            readable = [work / "src", self.harness, include, self.loop, *objects]
+            code, log = run_capped(self.sandbox.confined(command, readable, [work], COMPILE_LIMITS,
+                                                         fsize=COMPILE_FILE_BYTES), COMPILE_WALL)
+            # The scratch folder's name and the compiler's temporary files differ from run to run:
+            # a regrade must write the same report.
+            log = re.sub(r"\bcc[A-Za-z0-9]{6}\.", "cc*.", log.replace(str(work), "BUILD"))
+            if "No space left on device" in log or "File too large" in log:
+                log = (f"error: the compile wrote a file over {COMPILE_FILE_BYTES >> 20} MiB, the most any file of a "
+                       "compile may take\n") + log
+            if code is None:
+                log += f"\nthe compile did not finish within {COMPILE_WALL} s"
+            elif died_of(code, signal.SIGXCPU):
+                log += f"\nthe compile used more than {COMPILE_LIMITS.cpu} CPU seconds"
+            elif died_of(code, signal.SIGXFSZ):
+                log += f"\nthe compile wrote a file over {COMPILE_FILE_BYTES} bytes"
+            used = sum(p.stat().st_size for p in work.rglob("*") if p.is_file())
+            entry.mkdir()
+            keep_tail(entry / "compile.log", log)
+            if code == 0 and (work / "program").is_file():
+                os.replace(work / "program", entry / "program")
+            shutil.rmtree(work)
+            (entry / "done").touch()
+            program = entry / "program"
+            return (program if program.exists() else None), log, used
+
+    def run(self, exercise, program):
+        """Runs one exercise's judge against the student's program; cached per program, since a
+        batch's seed fixes every input. Returns a dict of what happened."""
+        key = (exercise["id"], str(program))
+        with self.lock(key):
+            with self.runs_guard:
+                if key in self.runs:
+                    return self.runs[key]
+            result = self._run_pair(exercise, program)
+            with self.runs_guard:
+                self.runs[key] = result
+            return result
+
+    def _run_pair(self, exercise, program):
+        cpu = self.cpus.get()  # the pair shares one core: a call and its answer cost microseconds
         try:
-            return run_limited(command, timeout, pass_fds=(fd_number,))
+            to_student, to_judge = os.pipe(), os.pipe()
+            with tempfile.TemporaryFile() as student_out, tempfile.TemporaryFile() as channel:
+                student = subprocess.Popen(
+                    ["taskset", "-c", str(cpu)] + self.sandbox.confined(
+                        [str(program)], [program.parent], [], test_limits(self.timeout),
+                        env={"KIT_JUDGE_FDS": f"{to_student[0]},{to_judge[1]}"}, fsize=RUN_FILE_BYTES),
+                    stdin=subprocess.DEVNULL, stdout=student_out, stderr=subprocess.STDOUT,
+                    pass_fds=(to_student[0], to_judge[1]), start_new_session=True)
+                os.close(to_student[0]), os.close(to_judge[1])
+                judge_env = {"PATH": "/usr/bin:/bin", "KIT_STUDENT_FDS": f"{to_judge[0]},{to_student[1]}",
+                             "KIT_EVIDENCE_FD": str(channel.fileno())}
+                # The judge is the kit's own program, but it reads what a student's program sends:
+                # it gets limits too (memory, CPU seconds, file size), so that no answer can make it
+                # take the machine from the class.
+                judge = ["prlimit", f"--as={JUDGE_MEMORY}", f"--cpu={math.ceil(self.timeout) + 5}",
+                         f"--fsize={RUN_FILE_BYTES}", "--core=0", "--",
+                         str(self.judges / target(exercise["id"])), "--reporter", "compact", "--rng-seed", self.seed]
+                with tempfile.TemporaryFile() as judge_out:
+                    started = subprocess.Popen(["taskset", "-c", str(cpu)] + judge, stdin=subprocess.DEVNULL,
+                                               stdout=judge_out, stderr=subprocess.STDOUT, env=judge_env,
+                                               pass_fds=(to_judge[0], to_student[1], channel.fileno()),
+                                               start_new_session=True)
+                    os.close(to_judge[0]), os.close(to_student[1])
+                    timed_out = False
+                    try:
+                        judge_code = started.wait(timeout=self.timeout)
+                    except subprocess.TimeoutExpired:
+                        timed_out, judge_code = True, None
+                        os.killpg(started.pid, signal.SIGKILL)
+                        started.wait()
+                    try:
+                        student_code = student.wait(timeout=5)  # the judge is done: the pipe is closed
+                    except subprocess.TimeoutExpired:
+                        os.killpg(student.pid, signal.SIGKILL)
+                        student_code = student.wait()
+                    judge_out.seek(0)
+                    output = judge_out.read(RUN_FILE_BYTES).decode("utf-8", errors="replace")
+                student_out.seek(0)
+                printed = student_out.read(KEPT_BYTES).decode("utf-8", errors="replace")
+                channel.seek(0)
+                cases, end, odd = evidence.parse(channel.read(evidence.READ_BYTES + 1))
+            return {"judge": judge_code, "student": student_code, "timed_out": timed_out, "output": output,
+                    "printed": printed, "cases": cases, "end": end, "odd": odd}
         finally:
-            os.close(fd_number)
+            self.cpus.put(cpu)
 
 
-def died_of(code, sig):
-    """Whether a run ended by `sig`: bare, a negative return code; under bwrap, 128 + the signal."""
-    return code in (-sig, 128 + sig)
-
-
-def verdict(exercise, binary, run, expected, errors, findings):
-    """(status, message) for one exercise."""
-    ident = exercise["id"]
-    if target(ident) in errors:  # checked first: a failed build must never run an older binary
-        return "compile error", errors[target(ident)]
-    if not binary.exists():
-        return "not run", "the test program was not built (see build.log)"
-    code, output, cases, end, odd = run
-    # An exit status of 128 + n reads as signal n only when the run never reached its end
-    # record: Catch2 exits with the number of failed checks (up to 255), which can be 152 or 159.
-    if code is None or (end is None and died_of(code, signal.SIGXCPU)):  # wall clock or CPU seconds ran out
+def verdict(exercise, compiled, run, expected, findings):
+    """(status, message) for one exercise, from what the judge saw and how the student's program ended."""
+    program, log = compiled
+    if program is None:
+        return "compile error", build_log.first_error(log, exercise["file"])
+    student = run["student"]
+    if run["timed_out"] or died_of(student, signal.SIGXCPU) or died_of(run["judge"], signal.SIGXCPU):
         return "timeout", "did not finish within the time limit: an endless loop?"
-    if end is None and died_of(code, signal.SIGSYS):  # the sandbox's filter: a graded test may not fork
-        return "integrity", "the test process tried to start a process or a thread, which grading forbids"
-    status, reason = evidence.judge(expected, cases, end, odd)
-    signal_caught = re.search(r"(SIG[A-Z]+) - ([^'\n]*)", output)
-    if status == "fail" and signal_caught:  # Catch turns a fatal signal into a failed check
-        return "crashed", f"the test process died: {signal_caught.group(1)} ({signal_caught.group(2).strip()})"
-    if status == "fail":
-        return "fail", build_log.first_failure(output) or reason
-    if end is None and (code < 0 or code >= 128):
-        return "crashed", f"the test process died (exit {code}); {build_log.first_failure(output)}".rstrip("; ")
-    if status == "pass" and code != 0:
-        return "integrity", f"the test process exited with code {code} after passing every check"
-    if status == "pass":
+    if died_of(student, signal.SIGSYS):
+        return "integrity", "the program tried to start a process or a thread, which grading forbids"
+    status, reason = evidence.judge(expected, run["cases"], run["end"], run["odd"], counts=False)
+    if status == "pass" and run["judge"] == 0:
         own = [f for f in findings if f["severity"] == "integrity" and f["file"] == exercise["file"]]
         if own:
             return "integrity", f"static check: {own[0]['file']}:{own[0]['line']}: {own[0]['what']}"
-    return status, reason
+        return "pass", ""
+    if student is not None and (student < 0 or student >= 128) and student != 128 + signal.SIGKILL:
+        number = -student if student < 0 else student - 128
+        name = signal.Signals(number).name if number in signal.Signals._value2member_map_ else f"signal {number}"
+        return "crashed", f"the program died ({name}); {build_log.first_failure(run['output'])}".rstrip("; ")
+    if status == "fail" or run["judge"] not in (0, None):
+        return "fail", build_log.first_failure(run["output"]) or reason
+    return "fail", f"the judge did not finish: {reason}"
 
 
-# The graded programs are compiled at -O1: a grade is compile-bound (each program runs in well under
-# a second): at -O1 a tree grades in 68 s here against 79 s at -O3, and without -ffast-math the
-# optimisation level changes no floating-point result. The kit's library they link stays -O3.
-GRADED_OPTIMISATION = "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -DNDEBUG"
-
-
-def shared_library(library, tree):
-    """The kit's prebuilt library (`--common-library`), copied into the tree, whose build sees
-    nothing of the kit's build folder; copied only when it changed, keeping its time stamp, so
-    that a regrade relinks nothing. Returns the path for KIT_COMMON_LIBRARY ("" without one)."""
-    if not library:
-        return ""
-    copy = tree / "kit-common" / "libkit_common.a"
-    copy.parent.mkdir(exist_ok=True)
-    if not copy.exists() or not filecmp.cmp(library, copy, shallow=False):
-        shutil.copy2(library, copy)
-    return str(copy)
-
-
-SHARED_TREE = ".grading-shared"  # the batch's Catch2 main and precompiled header, in OUT/ beside the grade trees
-
-
-def configure(sandbox, tree, build, impl, common, shared):
-    """Configures a grade tree, inside the sandbox, unless its cache already holds these settings
-    (the batch's shared tree too: its flags must be the graded programs' own for GCC to use its
-    precompiled header). Returns (configured, cmake's output)."""
-    cache = build / "CMakeCache.txt"
-    cached = cache.read_text(encoding="utf-8", errors="replace") if cache.exists() else ""
-    settings = [f"KIT_IMPL:STRING={impl}", f"KIT_COMMON_LIBRARY:FILEPATH={common}", f"KIT_GRADING_SHARED:PATH={shared}"]
-    if all(f"{line}\n" in cached for line in settings) and (build / "build.ninja").exists():
-        return True, ""
-    code, log = run_limited(sandbox.wrap(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja",
-                                          "-DCMAKE_BUILD_TYPE=Release", GRADED_OPTIMISATION, "-DKIT_GRADING_ONLY=ON",
-                                          *[f"-D{line}" for line in settings]], tree, True, BUILD_LIMITS), 600)
-    return code == 0, log
-
-
-def batch_shared(out, sandbox, library):
-    """Builds the graded programs' Catch2 main and precompiled header (tests/support/) once for
-    the batch, from the kit's code alone and before any student's code is compiled; every grade
-    tree then reads them, read-only (only in the sandbox: without it, a test could rewrite them).
-    Returns the build folder to pass as KIT_GRADING_SHARED, or "" without a sandbox or when they
-    could not be built (each tree then builds its own: slower, and the grades are the same)."""
-    if not sandbox.enabled:
-        return ""  # unconfined, a graded test could rewrite it for every classmate after it
-    tree = out / SHARED_TREE
-    code = None
-    try:
-        tree.mkdir(parents=True, exist_ok=True)
-        build = tree / "build"
-        common = shared_library(library, tree)
-        configured, log = configure(sandbox, tree, build, ROOT / "exercises", common, "")
-        if configured:
-            code, more = run_limited(sandbox.wrap(["cmake", "--build", str(build), "--target", "kit_grading_shared"],
-                                                  tree, True, BUILD_LIMITS), 600)
-            log += more
-        (tree / "build.log").write_text(log, encoding="utf-8")
-    except OSError as error:
-        print(f"grade: {tree}: {error}", file=sys.stderr)
-    if code != 0:
-        print(f"grade: the batch's shared Catch2 main and precompiled header could not be built (see "
-              f"{tree / 'build.log'}); each tree builds its own", file=sys.stderr)
-        return ""
-    sandbox.share(build)
-    return str(build)
-
-
-def grade_one(folder, label, out, points, expected, sandbox, jobs, timeout, library, shared):
-    tree = out / label
-    tree.mkdir(parents=True, exist_ok=True)
-    src, build = tree / "src", tree / "build"
-    common = shared_library(library, tree)
+def grade_one(folder, label, batch, expected):
+    tree = batch.out / label
+    if tree.exists():
+        shutil.rmtree(tree)
+    (tree / "logs").mkdir(parents=True)
+    started = time.monotonic()
+    points = batch.points
     allowed = submission.exercise_files(points)
-    copied, missing, ignored = submission.snapshot(folder, allowed, src)
+    with tempfile.TemporaryDirectory(dir=batch.shared) as scratch:
+        src = pathlib.Path(scratch)
+        copied, missing, ignored = submission.snapshot(folder, allowed, src)
+        texts = {name: (src / name).read_text(encoding="utf-8", errors="replace") for name in copied}
     kit_headers = static_check.kit_public_headers(ROOT)
     findings = []
-    for name in copied:
-        findings += static_check.check((src / name).read_text(encoding="utf-8", errors="replace"), name,
-                                       kit_headers, set(allowed))
-    configured, log = configure(sandbox, tree, build, src, common, shared)
-    if log:
-        (tree / "configure.log").write_text(log, encoding="utf-8")
-    rows = []
-    errors = {}
-    if configured:
-        # A program that fails to build, for whatever reason (an error, a log cut short, a build
-        # stopped by its time limit), must never run an older binary: every one is relinked.
-        for old in (build / "tests").glob("grade_ex*"):
-            if old.is_file():
-                old.unlink()
-        _, log = run_limited(sandbox.wrap(["cmake", "--build", str(build), "-j", str(jobs), "--", "-k", "0"],
-                                          tree, True, BUILD_LIMITS), 3600)
-        (tree / "build.log").write_text(log, encoding="utf-8")
-        errors = build_log.compile_errors(log, allowed)
-    evidence_dir = tree / "evidence"
-    evidence_dir.mkdir(exist_ok=True)
+    for name, text in texts.items():
+        headers = {h for e in points["exercises"] if e["file"] == name for h in e["headers"]}
+        findings += static_check.check(text, name, kit_headers, set(allowed), headers)
+    placeholders = {name: (ROOT / "exercises" / name).read_text(encoding="utf-8") for name in allowed}
+    # The student's files compiled side by side on the student's own share of the cores (all of them
+    # for a batch of one, one each for a class): no student waits for another's compiles. A missing
+    # file is graded as the untouched placeholder (it scores 0).
+    stems = {e["file"]: stem_of(e) for e in points["exercises"]}
+    compilers = concurrent.futures.ThreadPoolExecutor(max_workers=batch.compile_width)
+    pending = {name: compilers.submit(batch.compile, stems[name], texts.get(name, placeholders[name]))
+               for name in allowed}
+    compilers.shutdown(wait=False)
+    compiled, disk, rows = {}, 0, []
     for exercise in points["exercises"]:
-        ident = exercise["id"]
-        binary = build / "tests" / target(ident)
-        if not configured:
-            status, message = "error", "the folder could not be configured (see configure.log)"
+        name, ident = exercise["file"], exercise["id"]
+        if name not in compiled:
+            program, log, used = pending[name].result()
+            disk += used
+            if disk > STUDENT_DISK:
+                program, log = None, (f"error: the submission's programs take more than {STUDENT_DISK >> 20} MiB "
+                                      "of disk, the most one student may use\n") + log
+            compiled[name] = (program, log)
+            keep_tail(tree / "logs" / f"compile-{stems[name]}.log", log)
+        if time.monotonic() - started > batch.student_time:
+            status, message = "timeout", f"the submission used up its {batch.student_time:g} s of grading time"
         else:
-            run = (None, "", {}, None, [])
-            if binary.exists():
-                channel = evidence_dir / f"ex{ident}.txt"
-                fd = evidence_fd_for(channel)
-                command = sandbox.wrap([str(binary), "--reporter", "compact", "--rng-seed", SEED], tree, False,
-                                       test_limits(timeout), env={"KIT_EVIDENCE_FD": str(fd)})
-                code, output = run_with_evidence(command, channel, fd, timeout)
-                (evidence_dir / f"ex{ident}.out").write_text(output, encoding="utf-8")
-                run = (code, output, *evidence.read(channel))
-            status, message = verdict(exercise, binary, run, expected.get(ident, {}), errors, findings)
-        if exercise["file"] in missing and status != "pass":
-            message = f"{exercise['file']} is missing from the folder; " + message
-        rows.append({"id": ident, "chapter": exercise["chapter"], "title": exercise["title"], "file": exercise["file"],
+            run = {"student": None, "judge": None, "timed_out": False, "output": "", "printed": "", "cases": {},
+                   "end": None, "odd": []}
+            if compiled[name][0] is not None:
+                run = batch.run(exercise, compiled[name][0])
+                keep_tail(tree / "logs" / f"ex{ident}.out", run["output"])
+                if run["printed"]:
+                    keep_tail(tree / "logs" / f"ex{ident}.printed", run["printed"])
+            status, message = verdict(exercise, compiled[name], run, expected.get(ident, {}), findings)
+        if name in missing and status != "pass":
+            message = f"{name} is missing from the folder; " + message
+        rows.append({"id": ident, "chapter": exercise["chapter"], "title": exercise["title"], "file": name,
                      "points": exercise["points"] if status == "pass" else 0, "max_points": exercise["points"],
                      "status": status, "message": message})
     report = {"submission": label, "points": sum(r["points"] for r in rows),
-              "max_points": sum(r["max_points"] for r in rows), "sandboxed": sandbox.enabled,
-              "exercises": rows, "findings": findings, "ignored": ignored}
+              "max_points": sum(r["max_points"] for r in rows), "sandboxed": batch.sandbox.enabled,
+              "seed": batch.seed, "exercises": rows, "findings": findings, "ignored": ignored}
     reports.write_submission(report, tree)
-    reports.print_table(report)
-    return tree / "grade.json"
+    return tree / "grade.json", report
 
 
 def labels_for(folders):
     """A report name per folder: its base name, with a short hash of its path when two clash."""
-    names = [(f.name or "submission") if f.name not in ("class.csv", "class.md", SHARED_TREE) else f"{f.name}-folder"
+    names = [(f.name or "submission") if f.name not in ("class.csv", "class.md", SHARED) else f"{f.name}-folder"
              for f in folders]
     return [n if names.count(n) == 1 else f"{n}-{hashlib.sha1(str(f).encode()).hexdigest()[:6]}"
             for n, f in zip(names, folders)]
 
 
-def batch(args):
+def batch_command(args):
     if not (math.isfinite(args.timeout) and 0 < args.timeout <= 3600):
         print(f"grade: --timeout {args.timeout}: expected seconds in (0, 3600]", file=sys.stderr)
         return 2
+    if not (math.isfinite(args.student_time) and 0 < args.student_time <= 86400):
+        print(f"grade: --student-time {args.student_time}: expected seconds in (0, 86400]", file=sys.stderr)
+        return 2
+    if args.jobs < 1 or args.jobs > 256:
+        print(f"grade: --jobs {args.jobs}: expected a whole number in [1, 256]", file=sys.stderr)
+        return 2
+    if args.seed is not None and not re.fullmatch(r"[1-9][0-9]{0,8}", args.seed):
+        print(f"grade: --seed {args.seed}: expected a whole number in [1, 999999999]", file=sys.stderr)
+        return 2
+    seed = args.seed or str(1 + secrets.randbelow(999_999_999))
     points = json.loads(POINTS.read_text(encoding="utf-8"))
     expected = evidence.load_expected(EXPECTED)
     out = pathlib.Path(args.out).resolve()
@@ -270,50 +399,63 @@ def batch(args):
               file=sys.stderr)
         return 2
     out.mkdir(parents=True, exist_ok=True)
-    paths = []
-    shared = batch_shared(out, sandbox, args.common_library)
-    for folder, label in zip(folders, labels_for(folders)):
+    print(f"grade: seed {seed} (regrade with --seed {seed})", file=sys.stderr, flush=True)
+    batch = Batch(out, args.judges, args.common_library, sandbox, points, seed, args.timeout, args.student_time,
+                  args.jobs)
+    labels = labels_for(folders)
+    paths = [out / label / "grade.json" for label in labels]
+    batch.compile_width = max(1, args.jobs // min(args.jobs, len(folders)))
+
+    def one(pair):
+        folder, label = pair
         print(f"grading {folder}", file=sys.stderr, flush=True)
         try:
-            paths.append(grade_one(folder, label, out, points, expected, sandbox, args.jobs, args.timeout,
-                                   args.common_library, shared))
+            _, report = grade_one(folder, label, batch, expected)
+            reports.print_table(report)
         except (OSError, ValueError, UnicodeError) as error:  # one folder's failure never stops the batch
             print(f"grade: {folder}: could not be graded: {error}", file=sys.stderr)
-            paths.append(out / label / "grade.json")  # absent or stale: the summary names it
+
+    try:
+        with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            list(pool.map(one, zip(folders, labels)))
+    finally:
+        shutil.rmtree(batch.shared, ignore_errors=True)
     loaded = reports.load_reports(paths)
-    reports.write_class(points, loaded, out)
+    reports.write_class(points, loaded, out, seed)
     print("\nBatch summary (points, submission, report):")
     for path, report, problem in loaded:
         if report is None:
             print(f"  {'?':>4} / {'?':<4} {problem}: {path}")
         else:
             print(f"  {report['points']:>4} / {report['max_points']:<4} {report['submission']:<24} {path}")
-    print(f"Class reports: {out / 'class.csv'}, {out / 'class.md'}")
+    print(f"Class reports: {out / 'class.csv'}, {out / 'class.md'} (seed {seed})")
     return 0
 
 
 def record_evidence(args):
-    """Runs the reference graded programs and writes their cases and assertion counts."""
+    """Runs the reference judges against the reference programs and writes their cases and counts."""
     points = json.loads(POINTS.read_text(encoding="utf-8"))
-    build = pathlib.Path(args.build).resolve()
+    tests = pathlib.Path(args.build).resolve() / "tests"
     recorded, problems = {}, []
     for exercise in points["exercises"]:
         ident = exercise["id"]
-        binary = build / "tests" / target(ident)
-        channel = build / f"evidence-ex{ident}.txt"
-        fd = evidence_fd_for(channel)
-        code, output = run_with_evidence(["env", f"KIT_EVIDENCE_FD={fd}", str(binary), "--reporter", "compact",
-                                          "--rng-seed", SEED], channel, fd, 300)
-        cases, end, odd = evidence.read(channel)
+        with tempfile.TemporaryFile() as channel:
+            env = dict(os.environ, KIT_STUDENT_PROGRAM=str(tests / f"student_{stem_of(exercise)}"),
+                       KIT_EVIDENCE_FD=str(channel.fileno()))
+            code, output = run_capped([str(tests / target(ident)), "--reporter", "compact", "--rng-seed",
+                                       REFERENCE_SEED], 300, env=env, pass_fds=(channel.fileno(),))
+            channel.seek(0)
+            cases, end, odd = evidence.parse(channel.read(evidence.READ_BYTES + 1))
         if code != 0 or end is None or odd or any(bad for _, bad in cases.values()):
             problems.append(f"ex {ident}: the reference does not pass (exit {code}): {build_log.first_failure(output)}")
         recorded[ident] = {name: passed for name, (passed, _) in cases.items()}
     if problems:
         print("\n".join(problems), file=sys.stderr)
         return 1
-    text = json.dumps({"about": "Written by `./kit evidence` from the reference solutions: the test cases of each "
-                                "graded exercise and the assertions each runs. A submission passes an exercise only "
-                                "when its run shows exactly these.", **recorded}, indent=2, ensure_ascii=False) + "\n"
+    text = json.dumps({"about": "Written by `./kit evidence` from the reference solutions, at the seed ctest uses: "
+                                "the test cases of each graded exercise and the assertions each runs. A graded run "
+                                "passes only when every one of these cases ran and passed.", **recorded},
+                      indent=2, ensure_ascii=False) + "\n"
     pathlib.Path(args.output).write_text(text, encoding="utf-8")
     print(f"wrote {args.output}: {sum(len(c) for c in recorded.values())} test cases of {len(recorded)} exercises")
     return 0
@@ -324,17 +466,19 @@ def main():
     commands = parser.add_subparsers(dest="command", required=True)
     b = commands.add_parser("batch", help="grade folders")
     b.add_argument("--out", required=True)
-    b.add_argument("--jobs", type=int, default=2)
-    b.add_argument("--timeout", type=float, default=30.0, help="seconds per graded program")
+    b.add_argument("--jobs", type=int, default=2, help="students graded side by side")
+    b.add_argument("--timeout", type=float, default=30.0, help="seconds per exercise's run")
+    b.add_argument("--student-time", type=float, default=900.0, help="seconds of compiling and running per student")
+    b.add_argument("--seed", help="the seed of a batch to regrade (default: a new one, printed and recorded)")
     b.add_argument("--no-sandbox", action="store_true")
-    b.add_argument("--common-library", default="", help="a libkit_common.a built from this kit (./kit passes its "
-                   "own): the grade trees link it instead of each compiling the library")
+    b.add_argument("--judges", required=True, help="the kit's build/tests folder: the judges and the program loop")
+    b.add_argument("--common-library", required=True, help="the kit's libkit_common.a: the objects an exercise may link")
     b.add_argument("folders", nargs="+")
     r = commands.add_parser("record-evidence", help="record the reference's cases and assertion counts")
     r.add_argument("build")
     r.add_argument("--output", default=str(EXPECTED))
     args = parser.parse_args()
-    return batch(args) if args.command == "batch" else record_evidence(args)
+    return batch_command(args) if args.command == "batch" else record_evidence(args)
 
 
 if __name__ == "__main__":

@@ -34,12 +34,10 @@ TEST_CASE("ex 2.3: below ω·Δt = 2 the energy stays within (2 + ωΔt)/(2 − 
   // (1 − ωΔt/2) and (1 + ωΔt/2) times Q.
   for (double h : {0.1, 1.0, 1.9}) {
     INFO("omega*dt = " << h);
-    kit::Vec2 u(1.0, 0.0);
+    // The million steps run in the student's program, which returns every state for the check.
     double worst = 1.0;
-    for (long k = 0; k < 1'000'000; ++k) {
-      u = kit::symplectic_euler_step(oscillator, 0.0, u, h);
+    for (const kit::Vec2& u : kit::remote::symplectic_euler_oscillator_orbit(kit::Vec2(1.0, 0.0), h, 1'000'000))
       worst = std::max(worst, u.squaredNorm());
-    }
     CHECK(worst <= (2 + h) / (2 - h) * (1 + 1e-9));
     CHECK(worst >= 1.0);
   }

@@ -20,7 +20,9 @@ TEST_CASE("ex 4.2: one Cash–Karp step matches GSL's rkck, solution and error e
     const auto mine = kit::embedded_step(f, kit::cash_karp(), t, y, h, f(t, y));
     const auto gsl = kit::gsl_single_step(f, kit::GslStepper::rkck, t, y, h);
     INFO("trial " << trial << ", h = " << h);
-    CHECK((mine.y - gsl.y).cwiseAbs().maxCoeff() <= 1e-14 * (1 + y.cwiseAbs().maxCoeff()));
+    // Round-off grows with the step's own size: near the Moon one step moves y by more than 1.
+    const double moved = (gsl.y - y).cwiseAbs().maxCoeff();
+    CHECK((mine.y - gsl.y).cwiseAbs().maxCoeff() <= 1e-14 * (1 + y.cwiseAbs().maxCoeff() + 4 * moved));
     CHECK((mine.error - gsl.error).cwiseAbs().maxCoeff() <= 1e-14 * (1 + gsl.error.cwiseAbs().maxCoeff()));
     CHECK(mine.evaluations == 5);
   }

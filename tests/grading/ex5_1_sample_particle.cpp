@@ -50,8 +50,7 @@ TEST_CASE("ex 5.1: speed, lifetime, size, colour and alpha are each uniform in m
   const kit::Emitter e = cone_emitter();
   kit::SpriteRandom random(kit::testing::seed());
   std::vector<double> speed, lifetime, size, r, g, b, alpha;
-  for (int k = 0; k < 50000; ++k) {
-    const kit::ParticleSpawn p = kit::sample_particle(e, 3, random);
+  for (const kit::ParticleSpawn& p : kit::remote::sample_particles(e, 3, random, 50000)) {
     speed.push_back(length(p.vx, p.vy, p.vz));
     lifetime.push_back(p.lifetime), size.push_back(p.size), alpha.push_back(p.alpha);
     r.push_back(p.r), g.push_back(p.g), b.push_back(p.b);
@@ -102,8 +101,7 @@ TEST_CASE("ex 5.1: colour and alpha are clamped to [0, 1] and size to >= 0", "[g
   e.colour = {0.9, 0.1, 0.5}, e.colour_variance = {0.5, 0.5, 0.5}, e.alpha = {0.9, 0.5}, e.size = {0.05, 0.2};
   kit::SpriteRandom random(kit::testing::seed());
   bool clamped_high = false, clamped_low = false;
-  for (int k = 0; k < 5000; ++k) {
-    const kit::ParticleSpawn p = kit::sample_particle(e, 0, random);
+  for (const kit::ParticleSpawn& p : kit::remote::sample_particles(e, 0, random, 5000)) {
     for (float c : {p.r, p.g, p.b, p.alpha}) {
       REQUIRE(c >= 0.f);
       REQUIRE(c <= 1.f);
@@ -123,8 +121,7 @@ TEST_CASE("ex 5.1: each shape places and aims as specified", "[grade][05-sprites
   SECTION("cone: at the position, within angle_deg of the axis, uniform over the cap") {
     e.axis = {0.6, 0, 0.8};
     double mean_cos = 0;
-    for (int k = 0; k < n; ++k) {
-      const kit::ParticleSpawn p = kit::sample_particle(e, 0, random);
+    for (const kit::ParticleSpawn& p : kit::remote::sample_particles(e, 0, random, n)) {
       REQUIRE(p.x == 1.f);
       const double c = (0.6 * p.vx + 0.8 * p.vz) / 2.0;
       REQUIRE(c >= std::cos(25 * M_PI / 180) - 1e-5);
@@ -136,8 +133,7 @@ TEST_CASE("ex 5.1: each shape places and aims as specified", "[grade][05-sprites
   SECTION("disc: on the disc of radius R normal to the axis, a quarter of them within R/2") {
     e.shape = kit::EmitterShape::disc, e.radius = 2.0, e.angle_deg = 0;
     int inner = 0;
-    for (int k = 0; k < n; ++k) {
-      const kit::ParticleSpawn p = kit::sample_particle(e, 0, random);
+    for (const kit::ParticleSpawn& p : kit::remote::sample_particles(e, 0, random, n)) {
       REQUIRE(p.y == Approx(2.0).margin(1e-5));  // in the plane y = 2 (axis +y)
       const double r = std::hypot(p.x - 1.0, p.z - 3.0);
       REQUIRE(r <= 2.0 + 1e-5);
@@ -149,8 +145,7 @@ TEST_CASE("ex 5.1: each shape places and aims as specified", "[grade][05-sprites
   SECTION("disc: directions within angle_deg of the axis, uniform over the cap, wherever it starts") {
     e.shape = kit::EmitterShape::disc, e.radius = 1.0, e.angle_deg = 40;
     double mean_cos = 0, worst = 1;
-    for (int k = 0; k < n; ++k) {
-      const kit::ParticleSpawn p = kit::sample_particle(e, 0, random);
+    for (const kit::ParticleSpawn& p : kit::remote::sample_particles(e, 0, random, n)) {
       const double c = p.vy / 2.0;
       worst = std::min(worst, c);
       mean_cos += c / n;
@@ -162,8 +157,7 @@ TEST_CASE("ex 5.1: each shape places and aims as specified", "[grade][05-sprites
   SECTION("sphere: in the ball of radius R, flying radially out, an eighth within R/2") {
     e.shape = kit::EmitterShape::sphere, e.radius = 2.0;
     int inner = 0;
-    for (int k = 0; k < n; ++k) {
-      const kit::ParticleSpawn p = kit::sample_particle(e, 0, random);
+    for (const kit::ParticleSpawn& p : kit::remote::sample_particles(e, 0, random, n)) {
       const double dx = p.x - 1.0, dy = p.y - 2.0, dz = p.z - 3.0, r = length(dx, dy, dz);
       REQUIRE(r <= 2.0 + 1e-5);
       inner += r < 1.0;
@@ -174,8 +168,7 @@ TEST_CASE("ex 5.1: each shape places and aims as specified", "[grade][05-sprites
   SECTION("point: at the position, directions over the whole sphere (mean velocity 0)") {
     e.shape = kit::EmitterShape::point;
     double mx = 0, my = 0, mz = 0, below = 0;
-    for (int k = 0; k < n; ++k) {
-      const kit::ParticleSpawn p = kit::sample_particle(e, 0, random);
+    for (const kit::ParticleSpawn& p : kit::remote::sample_particles(e, 0, random, n)) {
       REQUIRE(p.z == 3.f);
       mx += p.vx / n, my += p.vy / n, mz += p.vz / n, below += p.vy < 0;
     }

@@ -92,7 +92,7 @@ TEST_CASE("ex 8.1: n steps at constant ω keep the axis and turn the plane acros
     const double grown = std::pow(s, n);
     const Mat3 expected = (along + grown * (turn - along)) * r0;
     Mat3 r = r0;
-    for (int k = 0; k < n; ++k) r = kit::explicit_rotation_step(r, omega, h);
+    r = kit::remote::iterated("explicit_rotation_step", n, r, omega, h);  // n steps, in the student's program
     INFO("trial " << trial << ": " << n << " steps of h = " << h << " s at omega = " << omega.transpose()
                   << " rad/s\ngot\n" << r << "\nexpected\n" << expected);
     CHECK(largest_entry(r - expected) <= 1e-12 * grown);

@@ -55,10 +55,8 @@ TEST_CASE("ex 8.2: the step is normalised: |q| = 1 after every one of 1e4 steps,
     const Vec3 omega = random_vector(rng, 1).normalized() * std::pow(10.0, kit::test::uniform(rng, -2, 1));
     const double h = trial == 0 ? 10.0 / omega.norm() : kit::test::uniform(rng, 1e-3, 1);
     double worst = 0;
-    for (int k = 0; k < 10'000; ++k) {
-      q = kit::quaternion_step(q, omega, h);
-      worst = std::max(worst, std::abs(q.norm() - 1));
-    }
+    for (const Quat& step : kit::remote::iterate("quaternion_step", 10'000, q, omega, h))  // in the student's program
+      worst = std::max(worst, std::abs(step.norm() - 1));
     INFO("trial " << trial << ": h|omega| = " << h * omega.norm() << ", largest | |q| − 1 | " << worst);
     CHECK(worst <= 1e-15);
   }
@@ -77,7 +75,7 @@ TEST_CASE("ex 8.2: at constant ω, n steps turn q by exactly n·2·atan(h|ω|/2)
     const double angle = 2.0 * n * std::atan(0.5 * h * omega.norm());
     const Mat3 expected = Eigen::AngleAxisd(angle, omega.normalized()).toRotationMatrix() * q0.toRotationMatrix();
     Quat q = q0;
-    for (int k = 0; k < n; ++k) q = kit::quaternion_step(q, omega, h);
+    q = kit::remote::iterated("quaternion_step", n, q, omega, h);  // n steps, in the student's program
     const Mat3 got = q.toRotationMatrix();
     INFO("trial " << trial << ": " << n << " steps of h = " << h << " s at omega = " << omega.transpose()
                   << " rad/s, |q| = " << q.norm() << "\ngot\n" << got << "\nexpected\n" << expected);

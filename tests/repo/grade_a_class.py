@@ -22,6 +22,21 @@ The six submissions, generated from the solution markers:
                         that a sandbox without the filter does not hurt the machine)
   and it ships a fake Catch2 (catch2/catch.hpp, catch2/catch_all.hpp, catch2/catch_test_macros.hpp,
   kit_catch.hpp) and kit/state.hpp that would make every check pass.
+  forger        solved, but with one attack per route that took full points from the grader that
+                ran the graded test in the student's process:
+    spring_system.hpp   a wrong method, and a forged record: a static initialiser writes a passing
+                        record of every case to every descriptor and leaves, through ::write and
+                        std::exit taken without a call
+    midpoint.hpp        a wrong method, and an operator== against Catch's Approx, found by
+                        argument-dependent lookup, that is always true
+    rigid_quaternion_step.hpp  the kit's own quaternion rate (kit/rigid_integrators.hpp) does
+                        the work, a header its exercise may not use
+    rk4.hpp             a wrong method, and a forged record through <unistd.h>, which the check
+                        forbids, included as <Eigen/../../unistd.h> (an allowed prefix)
+  hog           solved, but three files try to cost the class: a 256 MiB array in the object file
+                (fem_strain.hpp) and an endless loop (cloth_pcg.hpp), each of which costs only its
+                own exercise, and 4 MiB printed (sprite_over.hpp), which costs nothing: the output
+                is cut at 1 MiB as it is written and 64 KiB of it is kept.
 Checks: class.csv is right; every attacked item scores 0 (integrity, compile error or fail);
 the untouched items still score; the compile error names the student's file and line;
 regrading writes the same reports byte for byte; nothing outside the grade trees changed.
@@ -31,6 +46,7 @@ Usage: grade_a_class.py WORK_DIR
 import csv
 import hashlib
 import json
+import os
 import pathlib
 import re
 import shutil
@@ -86,7 +102,7 @@ def main(argv):
     value = {e["id"]: e["points"] for e in points["exercises"]}
     total = sum(value.values())
     solved = exercises.expected_tree(solutions, frozenset(exercises.regions(solutions)))
-    names = ["complete", "empty", "broken", "segfaults", "loops", "adversary"]
+    names = ["complete", "empty", "broken", "segfaults", "loops", "forger", "hog", "adversary"]
 
     write(classroom / "complete", solved)
     (classroom / "empty").mkdir(parents=True)
@@ -98,12 +114,11 @@ def main(argv):
 
     classmates = [str(classroom / n / "explicit_euler.hpp") for n in names[:-1]]
     reports = [str(out / n / "grade.json") for n in names[:-1]]
-    # The batch's shared build, which every classmate's tree compiles and links with.
-    shared = out / ".grading-shared" / "build"
-    shared_files = {shared / "tests/libkit_catch_main.a": b"!<arch>",
-                    shared / "tests/CMakeFiles/kit_test_pch.dir/cmake_pch.hxx.gch": b"gpch"}
+    # What every classmate's grade goes through: the judges, the programs' loop, the batch's cache.
+    judges = sorted((ROOT / "build" / "tests").glob("grade_ex*")) + [ROOT / "build/tests/libkit_remote_student.a"]
+    shared = out / ".grading-shared"
     targets = [str(outside / "pwned"), str(ROOT / "tests/grading/points.json"), str(ROOT / "tests/grading/extra.cpp"),
-               *map(str, shared_files)]
+               *map(str, judges[:2]), str(shared / "judges" / "grade_ex1_1"), str(shared / "programs" / "planted")]
     attack = ("inline const bool kit_attack = [] {\n"
               + "".join(f'  {{ std::ofstream f("{t}"); f << "{{}}"; }}\n' for t in targets + reports)
               + "".join(f'  {{ std::ofstream f("{c}", std::ios::app); f << "// tampered\\n"; }}\n' for c in classmates)
@@ -135,6 +150,61 @@ def main(argv):
         adversary[shadow] = fake_catch
     adversary["kit/state.hpp"] = "#pragma once\n"
     write(classroom / "adversary", adversary)
+
+    expected = json.loads((ROOT / "tests/grading/expected_evidence.json").read_text(encoding="utf-8"))
+
+    def forging(ids):
+        """A static initialiser that writes a passing record of the exercises `ids` to every
+        descriptor and leaves, through ::write and std::exit taken without a call."""
+        cases = [(name, count) for i in ids for name, count in expected[i].items()]
+        record = "".join(f"case\\t{name}\\t{count}\\t0\\n" for name, count in cases)
+        record += f"end\\t{sum(count for _, count in cases)}\\t0\\n"
+        return ("inline const bool kit_forged = [] {\n"
+                "  auto out = ::write;\n"
+                "  auto leave = std::exit;\n"
+                f'  const char* record = "{record}";\n'
+                "  std::size_t length = 0;\n"
+                "  while (record[length]) ++length;\n"
+                "  for (int fd = 3; fd < 256; ++fd) out(fd, record, length);\n"
+                "  leave(0);\n"
+                "  return true;\n"
+                "}();\n")
+
+    forger = dict(solved)
+    # Route 1: ::write and std::exit are declared by what the graded test includes before the
+    # student's file (Catch2, <cstdlib>), and taking them named no forbidden call.
+    # The method is wrong (the damping's sign).
+    forger["spring_system.hpp"] = prepend(solved["spring_system.hpp"].replace("-k, -c;", "-k, c;"), forging(["2.1"]))
+    # Route 2: a wrong method, and an == found by argument-dependent lookup that beats Catch2's own
+    # (Catch2 v2's Approx, Catch::Detail::Approx).
+    forger["midpoint.hpp"] = solved["midpoint.hpp"].replace("#pragma once", (
+        "#pragma once\nnamespace Catch { namespace Detail { class Approx;\n"
+        "inline bool operator==(const double&, const Approx&) { return true; } } }")).replace("f(t + dt / 2", "f(t")
+    # Route 3: the kit's own quaternion rate (rigid_integrators.hpp) does ex 8.2's work.
+    forger["rigid_quaternion_step.hpp"] = (
+        "#pragma once\n#include <kit/rigid_body.hpp>\n#include <kit/rigid_integrators.hpp>\nnamespace kit {\n"
+        "inline Quat quaternion_step(const Quat& q, const Vec3& omega, double h) {\n"
+        "  const Eigen::Vector4d y(q.w(), q.x(), q.y(), q.z());\n"
+        "  const Eigen::Vector4d next = y + h * quaternion_rate(y, q.conjugate() * omega);\n"
+        "  return Quat(next[0], next[1], next[2], next[3]).normalized();\n"
+        "}\n}  // namespace kit\n")
+    # Route 4: the static check's gaps: <unistd.h>, forbidden, reached through an allowed prefix
+    # that climbs out (Eigen/../../unistd.h), for a forged record of a wrong ex 3.2.
+    forger["rk4.hpp"] = prepend(solved["rk4.hpp"].replace("#pragma once", "#pragma once\n#include <Eigen/../../unistd.h>\n"
+                                                          "#include <cstdlib>").replace(
+                                    "(dt / 6) * (k1 + 2 * k2 + 2 * k3 + k4)", "dt * k2"),
+                                forging(["3.2"]))
+    write(classroom / "forger", forger)
+    forged = {"spring_system.hpp", "midpoint.hpp", "rigid_quaternion_step.hpp", "rk4.hpp"}
+
+    hog = dict(solved)
+    hog["fem_strain.hpp"] = prepend(solved["fem_strain.hpp"], "[[gnu::used]] static char kit_ballast[256 << 20] = {1};\n")
+    hog["sprite_over.hpp"] = prepend(solved["sprite_over.hpp"].replace("#pragma once", "#pragma once\n#include <cstdio>"),
+        "inline const bool kit_noise = [] {\n  for (int i = 0; i < (4 << 20); ++i) std::putchar('x');\n  return true;\n}();\n")
+    hog["cloth_pcg.hpp"] = solved["cloth_pcg.hpp"].replace(
+        "  const auto filtered = [&](Eigen::VectorXd w) {", "  for (volatile int spin = 0;; spin = spin + 1) {}\n  const auto filtered = [&](Eigen::VectorXd w) {", 1)
+    write(classroom / "hog", hog)
+    hogging = {"fem_strain.hpp", "cloth_pcg.hpp"}
     tampered = {"amplification.hpp", "rk4.hpp", "symplectic_euler.hpp", "spring_system.hpp", "implicit_euler.hpp",
                 "pi_controller.hpp"}
 
@@ -142,6 +212,7 @@ def main(argv):
     watched = [ROOT / f for f in kit_files if (ROOT / f).is_file()]
     before = {str(p): hashlib.sha1(p.read_bytes()).hexdigest() for p in watched}
     before_class = fingerprint([classroom])
+    judge_digests = {j: hashlib.sha1(j.read_bytes()).hexdigest() for j in judges}
 
     run = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), "--timeout", "20",
                           *[str(classroom / n) for n in names]], cwd=ROOT, capture_output=True, text=True)
@@ -163,13 +234,20 @@ def main(argv):
     all_ids = set(value)
     by_file = {e["id"]: e["file"] for e in points["exercises"]}
     expect_row("complete", all_ids)
-    expect_row("empty", set(), {i: ("compile error",) for i in all_ids})
+    expect_row("empty", set(), {i: ("fail",) for i in all_ids})  # graded as the placeholders
     broken = expect_row("broken", all_ids - {"3.1"}, {"3.1": ("compile error",)})
     message = next(r["message"] for r in broken["exercises"] if r["id"] == "3.1")
     if not re.match(r"midpoint\.hpp:\d+:\d+: error", message):
         problems.append(f"broken: the compile error should name midpoint.hpp and its line, got: {message}")
     expect_row("segfaults", all_ids - {"2.2"}, {"2.2": ("crashed",)})
     expect_row("loops", all_ids - {"3.2"}, {"3.2": ("timeout",)})
+    for name, files in (("forger", forged), ("hog", hogging)):
+        hit = {i for i in all_ids if by_file[i] in files}
+        expect_row(name, all_ids - hit, {i: ("integrity", "compile error", "fail", "crashed", "timeout") for i in hit})
+    noise = out / "hog" / "logs" / "ex5.3.printed"
+    if not noise.is_file() or not 60_000 < noise.stat().st_size < 70_000:
+        problems.append(f"hog: the 4 MiB printed by ex 5.3 should be kept as 64 KiB, got "
+                        f"{noise.stat().st_size if noise.is_file() else 'nothing'}")
     attacked = {i for i in all_ids if by_file[i] in tampered}
     report = expect_row("adversary", all_ids - attacked, {i: ("integrity", "compile error", "fail") for i in attacked})
     spawner = next(r for r in report["exercises"] if r["file"] == "pi_controller.hpp")
@@ -190,9 +268,10 @@ def main(argv):
     if table.get("complete", {}).get("total") != str(total):
         problems.append("class.csv: the complete submission does not have full marks")
 
-    # Regrading the same folders writes the same reports, byte for byte.
+    # Regrading the same folders with the batch's seed writes the same reports, byte for byte.
+    seed = json.loads((out / "complete" / "grade.json").read_text(encoding="utf-8"))["seed"]
     reports_before = fingerprint_reports(out)
-    again = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), "--timeout", "20",
+    again = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), "--timeout", "20", "--seed", seed,
                             *[str(classroom / n) for n in names]], cwd=ROOT, capture_output=True, text=True)
     reports_after = fingerprint_reports(out)
     if again.returncode != 0 or reports_before != reports_after:
@@ -207,9 +286,11 @@ def main(argv):
         changed.append("tests/grading/extra.cpp was created")
     if any(outside.iterdir()):
         changed.append(f"{outside} has new files")
-    for path, magic in shared_files.items():
-        if not path.is_file() or not path.read_bytes().startswith(magic):
-            changed.append(f"{path} (the batch's shared build) is missing or was overwritten")
+    for judge, digest in judge_digests.items():
+        if hashlib.sha1(judge.read_bytes()).hexdigest() != digest:
+            changed.append(f"{judge} (a judge every classmate goes through) was overwritten")
+    if shared.exists():
+        changed.append(f"{shared} (the batch's programs) was left behind")
     problems += [f"changed outside the grade trees: {c}" for c in changed]
 
     for p in problems:

@@ -18,9 +18,8 @@ extra work. Each is graded with `./kit grade`, the instructor's own command:
     file. The sets come from the same design over the files: for any two files F and G, one tree
     breaks F and not G, so G's exercises never include F, and F's error is reported as F's.
 
-All trees are written in turn into one staging folder that is graded in one build tree. Only the
-files that differ from the previous tree are rewritten, so ninja recompiles only the graded
-programs that include them: the kit's library is built once, and a run stays within minutes.
+All trees are graded in one batch, as a class: the grader compiles each distinct file once for
+the batch, so a file shared by several trees (a placeholder, a solution) is compiled once.
 
 Usage: grades_isolate_exercises.py WORK_DIR [--only ID,ID]
 """
@@ -70,12 +69,12 @@ def separating_sets(items):
     return sets
 
 
-def grade(stage, out):
-    run = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), str(stage)],
+def grade(folders, out):
+    run = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), *map(str, folders)],
                          cwd=ROOT, capture_output=True, text=True)
     if run.returncode != 0:
         sys.exit(f"./kit grade exited {run.returncode}:\n{run.stdout}\n{run.stderr}")
-    return json.loads((out / stage.name / "grade.json").read_text(encoding="utf-8"))
+    return {f.name: json.loads((out / f.name / "grade.json").read_text(encoding="utf-8")) for f in folders}
 
 
 def main(argv):
@@ -86,20 +85,15 @@ def main(argv):
     region_file = exercises.regions(solutions)
     total = sum(e["points"] for e in table.values())
     every = frozenset(region_file)
-    stage, out = work / "stage" / "submission", work / "out"
-    problems, started = [], time.monotonic()
+    classroom, out = work / "class", work / "out"
+    problems, started, trees = [], time.monotonic(), []
 
     def expect(label, files, points, per_exercise):
-        """Grades `files`; `per_exercise(row)` returns a problem string or None."""
-        write_tree(stage, files)
-        report = grade(stage, out)
-        found = [f"{label}: {problem}" for row in report["exercises"] if (problem := per_exercise(row))]
-        if report["points"] != points:
-            found.insert(0, f"{label}: expected {points} points, got {report['points']}: " +
-                         "; ".join(f"ex {r['id']} {r['status']} {r['message'][:160]}" for r in report["exercises"]))
-        problems.extend(found)
-        print(f"{'ok  ' if not found else 'FAIL'} {label}: {report['points']} / {report['max_points']}"
-              f"  ({time.monotonic() - started:.0f} s)", flush=True)
+        """Adds a tree to the batch: `files`, the points it must score, and `per_exercise(row)`,
+        which returns a problem string or None."""
+        folder = classroom / f"tree{len(trees) + 1:02d}"
+        write_tree(folder, files)
+        trees.append((folder, label, points, per_exercise))
 
     def passes_exactly(ids):
         def check(row):
@@ -135,9 +129,19 @@ def main(argv):
         expect(f"solutions/ with {', '.join(sorted(names))} uncompilable", files,
                total - sum(table[i]["points"] for i in in_file), compile_error_in_file)
 
+    reports = grade([folder for folder, *_ in trees], out)
+    for folder, label, points, per_exercise in trees:
+        report = reports[folder.name]
+        found = [f"{label}: {problem}" for row in report["exercises"] if (problem := per_exercise(row))]
+        if report["points"] != points:
+            found.insert(0, f"{label}: expected {points} points, got {report['points']}: " +
+                         "; ".join(f"ex {r['id']} {r['status']} {r['message'][:160]}" for r in report["exercises"]))
+        problems.extend(found)
+        print(f"{'ok  ' if not found else 'FAIL'} {label}: {report['points']} / {report['max_points']}")
     for p in problems:
         print(p, file=sys.stderr)
-    print(f"{len(problems)} problems; {len(selected)} exercises checked in {time.monotonic() - started:.0f} s")
+    print(f"{len(problems)} problems; {len(selected)} exercises checked in {len(trees)} trees, "
+          f"{time.monotonic() - started:.0f} s")
     return 1 if problems else 0
 
 

@@ -2,13 +2,14 @@
 """The grader's sandbox hides what it promises to hide, whatever the student code does with it,
 and its limits stop a fork bomb and an endless loop.
 
-Runs commands through grading.sandbox exactly as the grader does, with a grade tree of its own,
-and checks from inside: only the system folders, the kit and the tree are there (no /home,
-/root, /var, /etc/passwd or /etc/shadow, nothing else next to the kit); the kit's solutions/
-and .git are empty, another submission is invisible, the kit and the system are read-only, no
-capability is left to undo a mount, the environment holds no secret, there is no network, a
-test has nowhere to write, and only the tree (and a private /tmp) is writable during a build;
-the batch's shared build (Catch2 main, precompiled header) is readable and never writable.
+Runs commands through grading.sandbox exactly as the grader does (Sandbox.confined: a compile
+sees its folder writable, a run sees its program's folder read-only), and checks from inside:
+only the system folders and the given folder are there (no /home, /root, /var, /etc/passwd or
+/etc/shadow); of the kit only the confinement script, so no solutions/, .git or test source;
+another submission is invisible, the system is read-only, no capability is left to mount
+anything, the environment holds no secret, there is no network, a run has nowhere to write,
+and a compile only its own folder; a folder shared with every compile (the harness, the
+precompiled header) is readable and never writable.
 Then, under a graded test's limits: a fork bomb in a static initialiser is killed at its first
 fork and a busy loop at its CPU seconds; a compiler still builds a program under the build's
 limits, and that program runs under a test's.
@@ -64,7 +65,7 @@ def check_limits(sandbox, tree, inside):
             problems.append(what)
 
     def run_program(env, limits):
-        command = sandbox.wrap([str(tree / "prog")], tree, False, limits, env=env)
+        command = sandbox.confined([str(tree / "prog")], [tree], [], limits, env=env)
         done = subprocess.run(command, capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=30)
         return done.returncode, done.stdout.strip()
 
@@ -97,58 +98,39 @@ def main(argv):
     shell_limits = Limits(TEST_MEMORY, 60, True)
 
     def inside(script, writable=False, limits=shell_limits, timeout=60):
-        command = sandbox.wrap(["sh", "-c", script], tree, writable, limits)
+        command = sandbox.confined(["sh", "-c", script], [] if writable else [tree], [tree] if writable else [], limits,
+                                   cwd=tree)
         done = subprocess.run(command, capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=timeout)
         return done.returncode, done.stdout.strip()
 
-    # At the top: the system's folders (and links) as this machine has them, the way to the kit and
-    # the way to the tree, nothing else. Next to the kit: nothing.
+    # At the top: the system's folders (and links) as this machine has them, the way to the tree and
+    # the way to the confinement script (tools/grading/confine.py, bound alone), nothing else.
     top = {n for n in ("bin", "sbin", "lib", "lib32", "lib64", "libx32") if os.path.lexists(f"/{n}")}
-    top |= {"usr", "etc", "dev", "proc", ROOT.parts[1], tree.parts[1]}  # no /tmp for a test
-    # The folders that must not be there, but for the way to the kit or to the tree; each folder on
-    # the way to the kit (below the top, above the kit's parent, whose other entries `elsewhere`
-    # checks) holds only the next step.
+    top |= {"usr", "etc", "dev", "proc", ROOT.parts[1], tree.parts[1]}  # no /tmp
     hidden_tops = [f"/{d}" for d in ("home", "root", "var", "run", "srv", "opt", "mnt", "media", "boot")
                    if d not in (ROOT.parts[1], tree.parts[1])]
-    on_the_way = {pathlib.Path(*ROOT.parts[:depth]): [ROOT.parts[depth]] for depth in range(2, len(ROOT.parts) - 1)}
-    elsewhere = [] if ROOT.parent == pathlib.Path("/") else sorted(
-        p for p in ROOT.parent.iterdir() if p.name != ROOT.name and p not in tree.parents)[:20]
-
     checks = [
-        ("solutions/ is empty", f"ls -A {ROOT / 'solutions'} | wc -l", "0"),
-        ("the classmate's folder is empty", f"ls -A {classmate} | wc -l", "0"),
-        ("the kit is readable", f"test -r {ROOT / 'README.md'} && echo yes", "yes"),
-        ("the kit is read-only", f"touch {ROOT / 'pwned'} 2>/dev/null && echo written || echo refused", "refused"),
+        ("of the kit only the confinement script", f"find {ROOT} -type f | tr '\\n' ' '",
+         str(ROOT / "tools" / "grading" / "confine.py")),
+        ("no solutions/", f"ls -A {ROOT / 'solutions'} 2>/dev/null | wc -l", "0"),
+        ("no test source", f"ls {ROOT / 'tests' / 'grading'} 2>/dev/null | wc -l", "0"),
+        ("the classmate's folder is not there", f"ls -A {classmate} 2>/dev/null | wc -l", "0"),
         ("the root is read-only", "touch /pwned 2>/dev/null && echo written || echo refused", "refused"),
-        ("the tree is read-only for a test", f"touch {tree / 'x'} 2>/dev/null && echo written || echo refused", "refused"),
+        ("the folder is read-only for a run", f"touch {tree / 'x'} 2>/dev/null && echo written || echo refused", "refused"),
         ("no secret in the environment", "env | grep -c KIT_TEST_SECRET", "0"),
         ("no network: loopback only", "grep -c : /proc/net/dev", "1"),
-        ("nowhere to write for a test", "for d in /tmp /dev /dev/shm / $HOME; do touch $d/kit-x 2>/dev/null && echo $d; "
+        ("nowhere to write for a run", "for d in /tmp /dev /dev/shm / $HOME; do touch $d/kit-x 2>/dev/null && echo $d; "
          "done | wc -l", "0"),
-        ("only the system, the kit and the tree at the top", "ls -A / | sort | tr '\\n' ' '",
-         " ".join(sorted(top))),
+        ("only the system and the two ways at the top", "ls -A / | sort | tr '\\n' ' '", " ".join(sorted(top))),
         (f"no {', '.join(hidden_tops)}", f"ls -d {' '.join(hidden_tops)} 2>/dev/null | wc -l", "0"),
-        # A kit under /home/alice/ or /root/ brings that path into the sandbox, and only that path.
-        *[(f"{folder} holds only the way to the kit", f"ls -A {folder} | sort | tr '\\n' ' '", " ".join(names))
-          for folder, names in on_the_way.items()],
         ("no /etc/passwd, /etc/shadow, /etc/hostname", "cat /etc/passwd /etc/shadow /etc/hostname 2>/dev/null | wc -c",
          "0"),
         ("in /etc only the loader's files and the alternatives", "ls -A /etc | grep -cv '^ld\\.so\\.\\|^alternatives$'",
          "0"),
-        ("nothing next to the kit", f"ls -d {' '.join(str(p) for p in elsewhere) or '/nonexistent'} 2>/dev/null | wc -l",
-         "0"),
         ("no capability left", "grep CapEff /proc/self/status | tr -d '\\t'", "CapEff:0000000000000000"),
-        ("a hiding mount cannot be undone",
-         f"umount {ROOT / 'solutions'} 2>/dev/null; ls -A {ROOT / 'solutions'} | wc -l", "0"),
-        ("the kit cannot be remounted writable",
-         f"mount -o remount,bind,rw {ROOT} 2>/dev/null; touch {ROOT / 'pwned'} 2>/dev/null && echo written || echo refused",
-         "refused"),
-        ("a compiler and the build tools are there", "for c in c++ g++ cmake ninja python3; do command -v $c; done | wc -l", "5"),
+        ("nothing can be mounted", f"mount -t tmpfs none {tree} 2>/dev/null && echo mounted || echo refused", "refused"),
+        ("a compiler is there", "for c in c++ g++ python3; do command -v $c; done | wc -l", "3"),
     ]
-    if (ROOT / ".git").is_dir():
-        checks.append(("the kit's history is hidden", f"ls -A {ROOT / '.git'} 2>/dev/null | wc -l", "0"))
-    elif (ROOT / ".git").exists():  # a worktree: .git is a file naming the repository
-        checks.append(("the kit's history is hidden", f"cat {ROOT / '.git'} 2>/dev/null | wc -c", "0"))
     home = os.environ.get("HOME")
     if home and pathlib.Path(home).is_dir() and not str(ROOT).startswith(home.rstrip("/") + "/"):
         checks.append(("the grader's home is not there", f"ls -A {home} 2>/dev/null | wc -l", "0"))
@@ -160,29 +142,25 @@ def main(argv):
             problems.append(what)
     _, got = inside(f"touch {tree / 'built'} && echo written", writable=True)
     if got != "written" or not (tree / "built").exists():
-        problems.append("the tree is not writable for a build")
-    _, got = inside("touch /tmp/kit-sandbox-scratch && echo written", writable=True)
-    if got != "written":
-        problems.append("a build has no writable /tmp")
-    if pathlib.Path("/tmp/kit-sandbox-scratch").exists():
-        problems.append("the sandbox's /tmp is the machine's")
+        problems.append("a compile's folder is not writable")
+    _, got = inside("touch /tmp/kit-sandbox-scratch 2>/dev/null && echo written || echo refused", writable=True)
+    if got != "refused" or pathlib.Path("/tmp/kit-sandbox-scratch").exists():
+        problems.append("a compile can write outside its folder (/tmp)")
     if (ROOT / "pwned").exists() or (classmate / "rk4.hpp").read_text() != "a classmate's work\n":
-        problems.append("something outside the tree changed")
-    # The batch's shared build (the Catch2 main and precompiled header every tree uses): readable,
-    # never writable, not even by a build, whose student could otherwise plant code in the others'.
-    shared = work / "out" / ".grading-shared" / "build"
+        problems.append("something outside the folder changed")
+    # What every compile of the batch reads (the harness, the precompiled header): readable, never
+    # writable, not even by a compile, whose student could otherwise plant code in the others'.
+    shared = work / "out" / ".grading-shared" / "harness"
     shared.mkdir(parents=True)
-    (shared / "libkit_catch_main.a").write_text("the batch's main\n")
-    sandbox.share(shared)
-    _, got = inside(f"cat {shared / 'libkit_catch_main.a'}", writable=True)
-    if got != "the batch's main":
-        problems.append("the batch's shared build is not readable")
-    _, got = inside(f"(echo x >> {shared / 'libkit_catch_main.a'} || touch {shared / 'planted'}) 2>/dev/null "
-                    "&& echo written || echo refused", writable=True)
-    if got != "refused" or (shared / "libkit_catch_main.a").read_text() != "the batch's main\n":
-        problems.append("a build can write into the batch's shared build")
+    (shared / "student_pch.hpp").write_text("the batch's header\n")
+    command = sandbox.confined(["sh", "-c", f"cat {shared / 'student_pch.hpp'}; (echo x >> {shared / 'student_pch.hpp'} "
+                                f"|| touch {shared / 'planted'}) 2>/dev/null && echo written || echo refused"],
+                               [shared], [tree], shell_limits)
+    got = subprocess.run(command, capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=60).stdout.split()
+    if got[-1:] != ["refused"] or "header" not in got or (shared / "student_pch.hpp").read_text() != "the batch's header\n":
+        problems.append(f"a compile can write into what the batch shares, or cannot read it: {got}")
     problems += check_limits(sandbox, tree, inside)
-    print(f"{len(checks) + 8} checks; {len(problems)} problems")
+    print(f"{len(checks) + 6} checks; {len(problems)} problems")
     return 1 if problems else 0
 
 

@@ -21,6 +21,17 @@ def compile_errors(build_log, student_files):
     return errors
 
 
+def first_error(log, student_file):
+    """The first compiler error of a student's program, preferring one in the student's own file,
+    with the path cut to the file's name; or the log's last line (a limit that stopped it)."""
+    found = [line.strip() for line in log.splitlines() if re.search(r"\berror\b", line)]
+    own = [line for line in found if re.search(rf"(^|/){re.escape(student_file)}:\d+", line)]
+    if own or found:
+        return re.sub(r"^.*?/([^/]+:\d+:\d+: )", r"\1", (own or found)[0])[:400]
+    lines = [line.strip() for line in log.splitlines() if line.strip()]
+    return (lines[-1] if lines else "did not compile")[:400]
+
+
 def first_failure(output):
     """The line that says best why a test failed: the placeholder's sentence, else Catch's first
     'failed:' line, else the first line of output."""

@@ -24,7 +24,9 @@ def write_submission(report, out_dir):
     out_dir.mkdir(parents=True, exist_ok=True)
     rows, label = report["exercises"], report["submission"]
     _write(out_dir / "grade.json", json.dumps(report, indent=2, ensure_ascii=False) + "\n")
-    md = [f"# Grade: {label}", "", f"**{report['points']} / {report['max_points']} points**", ""]
+    md = [f"# Grade: {label}", "", f"**{report['points']} / {report['max_points']} points**", "",
+          f"Seed {report['seed']}: the random cases of every exercise; `./kit grade --seed {report['seed']}` regrades "
+          "with the same ones.", ""]
     if not report["sandboxed"]:
         md += ["**Not sandboxed** (graded with --no-sandbox): the student's code ran with the grader's rights.", ""]
     md += ["| exercise | points | status | file | message |", "|---|---|---|---|---|"]
@@ -83,7 +85,7 @@ def load_reports(paths):
     return loaded
 
 
-def write_class(points, loaded, out_dir):
+def write_class(points, loaded, out_dir, seed):
     """class.csv (a row per student, a column per exercise, a total) and class.md."""
     ids = [e["id"] for e in points["exercises"]]
     maximum = sum(e["points"] for e in points["exercises"])
@@ -109,7 +111,8 @@ def write_class(points, loaded, out_dir):
                         + [report["points"], report["max_points"], "yes" if report.get("sandboxed") else "no", ""])
     _write(pathlib.Path(out_dir) / "class.csv", buffer.getvalue())
     n = sum(1 for _, r, _ in loaded if r is not None)
-    md = ["# Class report", "", f"{n} submissions graded" + (f", {len(loaded) - n} unreadable" if n < len(loaded) else ""), "",
+    md = ["# Class report", "", f"{n} submissions graded" + (f", {len(loaded) - n} unreadable" if n < len(loaded) else "")
+          + f", seed {seed} (`./kit grade --seed {seed}` regrades with the same cases)", "",
           "## Score per exercise", "", "| exercise | max | mean | " + " | ".join(STATUSES) + " |",
           "|---|---|---|" + "---|" * len(STATUSES)]
     for e in points["exercises"]:

@@ -122,6 +122,29 @@ class Sandbox:
         """Makes `folder` readable, never writable, by every command wrapped from now on."""
         self.shared.append(pathlib.Path(folder))
 
+    def confined(self, command, readable, writable, limits, env=None, cwd=None, fsize=OUTPUT_LIMIT):
+        """`command` seeing the machine's read-only part, the folders `readable` (read-only) and
+        `writable`, and nothing of the kit: a student's compile (its file, the headers its
+        exercise may use, the harness) and a student's program (the program alone). TMPDIR is the
+        first writable folder, or unset (no writable place at all)."""
+        env = dict(env or {})
+        if writable:
+            env.setdefault("TMPDIR", str(writable[0]))
+        confine = [PYTHON, "-I", "-S", str(CONFINE), "--as", str(limits.memory), "--fsize", str(fsize),
+                   "--cpu", str(limits.cpu), *([] if limits.spawn else ["--no-spawn"]), "--"]
+        if not self.enabled:
+            return ["env", *[f"{k}={v}" for k, v in sorted(env.items())]] + confine + command
+        extra = [word for key, value in sorted(env.items()) for word in ("--setenv", key, value)]
+        binds = [word for f in readable for word in ("--ro-bind", str(f), str(f))]
+        binds += [word for f in writable for word in ("--bind", str(f), str(f))]
+        return (["bwrap", *system_binds(), "--dev", "/dev", "--remount-ro", "/dev", "--proc", "/proc",
+                 "--unshare-all", "--die-with-parent", "--new-session", "--cap-drop", "ALL", "--clearenv",
+                 "--setenv", "PATH", "/usr/local/bin:/usr/bin:/bin", "--setenv", "HOME", "/nonexistent",
+                 "--setenv", "LANG", "C.UTF-8", "--setenv", "CCACHE_DISABLE", "1"] + extra
+                + ["--ro-bind", str(CONFINE), str(CONFINE)] + binds
+                + ["--remount-ro", "/", "--chdir", str(cwd or (writable or readable or ["/"])[0]), "--"]
+                + confine + command)
+
     def wrap(self, command, tree, writable, limits, env=None):
         """`command` confined to `tree` (a grade tree) under `limits`, with `env` as the only
         variables it gets besides PATH, HOME, TMPDIR and LANG."""

@@ -39,6 +39,11 @@ PROCESS_CONTROL = re.compile(
 FORBIDDEN_NAMES = re.compile(
     r"\b(_Exit|_exit|quick_exit|at_quick_exit|vfork|exec[lv]p?e?|execvpe|sigaction|longjmp|setjmp|"
     r"syscall|dlopen|ptrace|getenv|secure_getenv|environ|dprintf|posix_spawnp?|pthread_create|KIT_EVIDENCE_FD)\b")
+# Taking a process-control or file-system function's address, to call it later through a pointer.
+# (After an operator, a bracket or `return`: `const Spring& system` declares a reference.) A
+# qualified name needs no `&`: `auto out = ::write;` is a pointer too.
+ADDRESS_TAKEN = re.compile(r"(?:(?:^|[=(,{;?:!|]|\breturn)\s*&\s*(?:(?:std)?\s*::\s*)?|(?<![\w>])(?:std)?\s*::\s*)(exit|abort|fork|popen|kill|raise|atexit|system|signal|open|write|"
+                           r"remove|rename|unlink|fopen|dup2?)\b(?!\s*\()")
 INLINE_ASM = re.compile(r"\b(asm|__asm__|__asm)\b")
 FILE_SYSTEM = re.compile(r"\b(basic_ofstream|basic_ifstream|basic_fstream|ofstream|ifstream|fstream|filebuf|"
                          r"filesystem|FILE)\b|\b(fopen|fdopen|freopen|openat|creat|unlink|rmdir|mkdir|truncate|"
@@ -152,12 +157,19 @@ def kit_public_headers(kit_root):
     return {p.relative_to(include).as_posix() for p in include.rglob("*.hpp")}
 
 
-def allowed_include(target, angle, kit_headers, exercise_files):
-    library = target in STANDARD_HEADERS or target.startswith(("Eigen/", "fmt/")) or target in kit_headers
+def allowed_include(target, angle, kit_headers, exercise_files, exercise_headers=None):
+    """Whether an exercise file may include `target`: the standard library, Eigen, {fmt}, the kit
+    headers its exercise may use (exercise_headers; every public kit header when None), and, in
+    quotes, another exercise file. No path may climb (..), start at the root or hold a backslash."""
+    parts = target.split("/")
+    if target.startswith("/") or "\\" in target or ".." in parts or "." in parts or "" in parts:
+        return False
+    kit = target in kit_headers and (exercise_headers is None or target in exercise_headers)
+    library = target in STANDARD_HEADERS or target.startswith(("Eigen/", "fmt/")) or kit
     return library or (not angle and target in exercise_files)
 
 
-def check(text, name, kit_headers, exercise_files):
+def check(text, name, kit_headers, exercise_files, exercise_headers=None):
     """Findings for one file: dicts {file, line, severity: integrity|note, what}.
 
     Phase 2 first (line splices joined), then comments and literals blanked, then the checks, line
@@ -186,10 +198,12 @@ def check(text, name, kit_headers, exercise_files):
             elif word == "include":
                 target = re.match(r'\s*(?:#|%:)\s*include\s*([<"])([^>"]+)[>"]', bare)
                 if not target or not allowed_include(target.group(2), target.group(1) == "<", kit_headers,
-                                                     exercise_files):
-                    found("integrity", f"#include outside the standard library, Eigen and the kit ({shown})")
+                                                     exercise_files, exercise_headers):
+                    found("integrity", f"#include outside the standard library, Eigen and the kit headers this "
+                                       f"exercise may use ({shown})")
             elif word == "pragma":
-                continue
+                if not re.match(r"^\s*(?:#|%:)\s*pragma\s+once\s*$", code):
+                    found("note", f"#pragma ({shown})")
             elif word in ("if", "ifdef", "ifndef", "elif", "else", "endif"):
                 found("note", f"preprocessor #{word}")
             else:  # include_next, import, line, error… : nothing an exercise needs
@@ -199,6 +213,8 @@ def check(text, name, kit_headers, exercise_files):
             found("integrity", f"process-control call {match.group(1) or match.group(2)}()", match.start())
         for match in FORBIDDEN_NAMES.finditer(code):
             found("integrity", f"use of {match.group(1)}", match.start())
+        for match in ADDRESS_TAKEN.finditer(code):
+            found("integrity", f"the address of {match.group(1)}", match.start())
         asm = INLINE_ASM.search(code)
         if asm:
             found("integrity", "inline assembly", asm.start())

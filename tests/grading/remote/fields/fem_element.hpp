@@ -1,0 +1,9 @@
+#pragma once
+// How kit/fem_element.hpp's and kit/fem_material.hpp's types cross the link (wire.hpp).
+#include <tuple>
+
+#include <kit/fem_element.hpp>
+
+namespace kit {
+inline auto fields(Lame& l) { return std::tie(l.lambda, l.mu); }
+}  // namespace kit

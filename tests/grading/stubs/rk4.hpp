@@ -1,0 +1,12 @@
+#pragma once
+// The judge's rk4.hpp (ex 3.2): the exercise's names and signatures, each answered by the
+// student's program (remote/judge.hpp). No student code is compiled here.
+#include "remote/judge.hpp"
+
+namespace kit {
+template <class Rhs, class State>
+State rk4_step(const Rhs& f, typename State::Scalar t, const State& u, typename State::Scalar dt) {
+  using S = typename State::Scalar;
+  return remote::call<State>("rk4_step/" + remote::key<State>(), remote::callback<State(S, const State&)>(f), t, u, dt);
+}
+}  // namespace kit
