@@ -188,7 +188,8 @@ class Batch:
             (work / "src").mkdir(parents=True)
             (work / "src" / f"{stem}.hpp").write_text(source_text, encoding="utf-8")
             include, objects = self.allowed[stem]
-            command = ["c++", *COMPILE_FLAGS, "-include", str(self.pch), "-iquote", str(work / "src"), "-iquote", str(self.harness),
+            command = ["c++", *COMPILE_FLAGS, "-include", str(self.pch), "-iquote", str(work / "src"),
+                       "-iquote", str(self.harness),
                        "-I", str(include), "-isystem", "/usr/include/eigen3",
                        str(self.harness / "harness" / f"{stem}.cpp"), *map(str, objects), str(self.loop), "-lfmt",
                        "-o", str(work / "program")]
@@ -472,7 +473,8 @@ def main():
     b.add_argument("--seed", help="the seed of a batch to regrade (default: a new one, printed and recorded)")
     b.add_argument("--no-sandbox", action="store_true")
     b.add_argument("--judges", required=True, help="the kit's build/tests folder: the judges and the program loop")
-    b.add_argument("--common-library", required=True, help="the kit's libkit_common.a: the objects an exercise may link")
+    b.add_argument("--common-library", required=True,
+                   help="the kit's libkit_common.a: the objects an exercise may link")
     b.add_argument("folders", nargs="+")
     r = commands.add_parser("record-evidence", help="record the reference's cases and assertion counts")
     r.add_argument("build")

@@ -28,17 +28,39 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   kit::remote::Reader r(data + 1, size - 1);
   try {
     switch (data[0] % 12) {
-      case 0: decode<std::vector<double>>(r); break;
-      case 1: decode<std::string>(r); break;
-      case 2: decode<Eigen::MatrixXd>(r); break;
-      case 3: decode<kit::Matrix3>(r); break;
-      case 4: decode<kit::SparseMatrix>(r); break;
-      case 5: decode<kit::Springs>(r); break;
-      case 6: decode<kit::Particles>(r); break;
-      case 7: decode<kit::Image>(r); break;
-      case 8: decode<kit::PcgResult>(r); break;
-      case 9: decode<kit::AdaptiveRun<kit::Vec<1>>>(r); break;
-      case 10: decode<std::vector<kit::Death>>(r); break;
+      case 0:
+        decode<std::vector<double>>(r);
+        break;
+      case 1:
+        decode<std::string>(r);
+        break;
+      case 2:
+        decode<Eigen::MatrixXd>(r);
+        break;
+      case 3:
+        decode<kit::Matrix3>(r);
+        break;
+      case 4:
+        decode<kit::SparseMatrix>(r);
+        break;
+      case 5:
+        decode<kit::Springs>(r);
+        break;
+      case 6:
+        decode<kit::Particles>(r);
+        break;
+      case 7:
+        decode<kit::Image>(r);
+        break;
+      case 8:
+        decode<kit::PcgResult>(r);
+        break;
+      case 9:
+        decode<kit::AdaptiveRun<kit::Vec<1>>>(r);
+        break;
+      case 10:
+        decode<std::vector<kit::Death>>(r);
+        break;
       default: {
         kit::remote::RandomBytes bytes{};
         kit::remote::get(r, bytes);

@@ -42,7 +42,8 @@ FORBIDDEN_NAMES = re.compile(
 # Taking a process-control or file-system function's address, to call it later through a pointer.
 # (After an operator, a bracket or `return`: `const Spring& system` declares a reference.) A
 # qualified name needs no `&`: `auto out = ::write;` is a pointer too.
-ADDRESS_TAKEN = re.compile(r"(?:(?:^|[=(,{;?:!|]|\breturn)\s*&\s*(?:(?:std)?\s*::\s*)?|(?<![\w>])(?:std)?\s*::\s*)(exit|abort|fork|popen|kill|raise|atexit|system|signal|open|write|"
+ADDRESS_TAKEN = re.compile(r"(?:(?:^|[=(,{;?:!|]|\breturn)\s*&\s*(?:(?:std)?\s*::\s*)?|(?<![\w>])(?:std)?\s*::\s*)"
+                           r"(exit|abort|fork|popen|kill|raise|atexit|system|signal|open|write|"
                            r"remove|rename|unlink|fopen|dup2?)\b(?!\s*\()")
 INLINE_ASM = re.compile(r"\b(asm|__asm__|__asm)\b")
 FILE_SYSTEM = re.compile(r"\b(basic_ofstream|basic_ifstream|basic_fstream|ofstream|ifstream|fstream|filebuf|"

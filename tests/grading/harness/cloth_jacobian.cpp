@@ -7,7 +7,8 @@
 using kit::Vector3;
 
 void register_entries(kit::remote::Entries& e) {
-  e.add("spring_stiffness_block", [](const Vector3& xa, const Vector3& xb, double rest, double stiffness, bool clamp) {
-    return kit::spring_stiffness_block(xa, xb, rest, stiffness, clamp);
-  });
+  e.add("spring_stiffness_block",
+        [](const Vector3& xa, const Vector3& xb, double rest, double stiffness, bool clamp) {
+          return kit::spring_stiffness_block(xa, xb, rest, stiffness, clamp);
+        });
 }

@@ -5,8 +5,8 @@
 #include "remote/student.hpp"
 
 void register_entries(kit::remote::Entries& e) {
-  e.add("filtered_pcg", [](const kit::SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<kit::Matrix3>& filters,
-                           double tolerance, int max_iterations) {
+  e.add("filtered_pcg", [](const kit::SparseMatrix& A, const Eigen::VectorXd& b,
+                           const std::vector<kit::Matrix3>& filters, double tolerance, int max_iterations) {
     return kit::filtered_pcg(A, b, filters, tolerance, max_iterations);
   });
 }

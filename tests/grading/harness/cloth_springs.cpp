@@ -5,5 +5,7 @@
 #include "remote/student.hpp"
 
 void register_entries(kit::remote::Entries& e) {
-  e.add("build_springs", [](const kit::ClothGrid& grid, const kit::SpringLayout& layout) { return kit::build_springs(grid, layout); });
+  e.add("build_springs", [](const kit::ClothGrid& grid, const kit::SpringLayout& layout) {
+    return kit::build_springs(grid, layout);
+  });
 }

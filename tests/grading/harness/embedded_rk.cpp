@@ -11,10 +11,9 @@ using namespace kit::remote;
 namespace {
 template <class State>
 void add_step(Entries& e) {
-  e.add("embedded_step/" + key<State>(), [](Callback<State(double, const State&)> f, const ButcherTableau& tableau, double t,
-                                            const State& y, double h, const State& k1) {
-    return embedded_step(f, tableau, t, y, h, k1);
-  });
+  e.add("embedded_step/" + key<State>(),
+        [](Callback<State(double, const State&)> f, const ButcherTableau& tableau, double t, const State& y,
+           double h, const State& k1) { return embedded_step(f, tableau, t, y, h, k1); });
 }
 }  // namespace
 

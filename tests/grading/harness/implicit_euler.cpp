@@ -10,12 +10,8 @@ using namespace kit::remote;
 namespace {
 template <int N>
 void add_affine(Entries& e) {
-  static Objects<ImplicitEulerAffine<N>> objects;
-  const std::string name = "ImplicitEulerAffine/" + key<Vec<N>>() + "/";
-  e.add(name + "new", [](const AffineSystem<N>& s, double dt) {
-    return objects.keep(std::make_unique<ImplicitEulerAffine<N>>(s, dt));
-  });
-  e.add(name + "step", [](long id, const Vec<N>& u) -> Vec<N> { return objects.at(id).step(u); });
+  add_stepper<ImplicitEulerAffine<N>, Vec<N>, AffineSystem<N>, double>(
+      e, "ImplicitEulerAffine/" + key<Vec<N>>());
 }
 }  // namespace
 

@@ -1,5 +1,5 @@
-// The student's program for implicit_euler_spring.hpp (ex 2.2): its entry points call the student's functions and
-// return what they return (remote/student.hpp). It checks nothing.
+// The student's program for implicit_euler_spring.hpp (ex 2.2): its entry points call the student's functions
+// and return what they return (remote/student.hpp). It checks nothing.
 #include "implicit_euler_spring.hpp"
 #include "remote/fields/spring.hpp"
 #include "remote/student.hpp"

@@ -4,16 +4,8 @@
 #include <kit/state.hpp>
 #include "remote/student.hpp"
 
-using namespace kit;
-using namespace kit::remote;
-
-namespace {
-template <class State>
-void add_step(Entries& e) {
-  using S = typename State::Scalar;
-  e.add("rk4_step/" + key<State>(),
-        [](Callback<State(S, const State&)> f, S t, const State& u, S dt) -> State { return rk4_step(f, t, u, dt); });
+void register_entries(kit::remote::Entries& e) {
+  kit::remote::add_one_step<kit::Vec<1>, kit::Vec<2>>(
+      e, "rk4_step",
+      [](const auto& f, auto t, const auto& u, auto dt) { return kit::rk4_step(f, t, u, dt); });
 }
-}  // namespace
-
-void register_entries(Entries& e) { add_step<Vec<1>>(e), add_step<Vec<2>>(e); }

@@ -13,7 +13,8 @@ void register_entries(kit::remote::Entries& e) {
     const long removed = kit::age_and_kill(particles, dt, rules, bursts_on_death, deaths);
     bool kept = true;
     std::size_t k = 0;
-    kit::remote::Codec<kit::Particles>::each_array(particles, [&](auto& a) { kept = kept && a.data() == storage[k++]; });
+    kit::remote::Codec<kit::Particles>::each_array(particles,
+                                                   [&](auto& a) { kept = kept && a.data() == storage[k++]; });
     return std::pair<long, bool>(removed, kept);
   });
 }

@@ -6,8 +6,8 @@
 
 namespace {
 /// n draws from the generator whose state the judge sent; the state goes back advanced.
-std::vector<kit::ParticleSpawn> draw(const kit::Emitter& emitter, std::uint8_t index, kit::remote::RandomBytes& state,
-                                     long n) {
+std::vector<kit::ParticleSpawn> draw(const kit::Emitter& emitter, std::uint8_t index,
+                                     kit::remote::RandomBytes& state, long n) {
   if (n < 0 || n > 1'000'000) throw std::invalid_argument("sample_particles: n out of range [0, 1e6]");
   kit::SpriteRandom random(0);
   std::memcpy(static_cast<void*>(&random), state.data(), sizeof random);
@@ -20,10 +20,12 @@ std::vector<kit::ParticleSpawn> draw(const kit::Emitter& emitter, std::uint8_t i
 }  // namespace
 
 void register_entries(kit::remote::Entries& e) {
-  e.add("sample_particle", [](const kit::Emitter& emitter, std::uint8_t index, kit::remote::RandomBytes& state) {
-    return draw(emitter, index, state, 1).front();
-  });
-  e.add("sample_particles", [](const kit::Emitter& emitter, std::uint8_t index, kit::remote::RandomBytes& state, long n) {
-    return draw(emitter, index, state, n);
-  });
+  e.add("sample_particle",
+        [](const kit::Emitter& emitter, std::uint8_t index, kit::remote::RandomBytes& state) {
+          return draw(emitter, index, state, 1).front();
+        });
+  e.add("sample_particles",
+        [](const kit::Emitter& emitter, std::uint8_t index, kit::remote::RandomBytes& state, long n) {
+          return draw(emitter, index, state, n);
+        });
 }

@@ -5,5 +5,6 @@
 #include "remote/student.hpp"
 
 void register_entries(kit::remote::Entries& e) {
-  e.add("composite_over", [](kit::Image& image, const kit::SpriteTile& tile) { kit::composite_over(image, tile); });
+  e.add("composite_over",
+        [](kit::Image& image, const kit::SpriteTile& tile) { kit::composite_over(image, tile); });
 }

@@ -15,6 +15,7 @@ using namespace kit::remote;
 
 void register_entries(Entries& e) {
   using V = Vec<1>;
-  e.add("step_doubling/" + key<V>(), [](Callback<V(double, const V&, double)> step, double t0, const V& u, double t_end,
-                                        const StepDoubling& options) { return step_doubling(step, t0, u, t_end, options); });
+  e.add("step_doubling/" + key<V>(),
+        [](Callback<V(double, const V&, double)> step, double t0, const V& u, double t_end,
+           const StepDoubling& options) { return step_doubling(step, t0, u, t_end, options); });
 }

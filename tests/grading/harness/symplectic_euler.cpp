@@ -11,9 +11,8 @@ template <int N>
 void add_step(Entries& e) {
   using Half = Vec<N / 2>;
   e.add("symplectic_euler_step/" + key<Vec<N>>(),
-        [](Callback<Half(double, const Half&, const Half&)> accel, double t, const Vec<N>& u, double dt) -> Vec<N> {
-          return symplectic_euler_step(accel, t, u, dt);
-        });
+        [](Callback<Half(double, const Half&, const Half&)> accel, double t, const Vec<N>& u,
+           double dt) -> Vec<N> { return symplectic_euler_step(accel, t, u, dt); });
 }
 }  // namespace
 

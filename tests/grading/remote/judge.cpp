@@ -42,7 +42,8 @@ void stay_on_this_processor() {
 /// Starts `program` with its requests on descriptor 3 and its answers on 4 (student.hpp).
 std::unique_ptr<Link> start(const char* program) {
   int requests[2], answers[2];
-  if (::pipe(requests) != 0 || ::pipe(answers) != 0) throw std::runtime_error("judge: no pipe for the student program");
+  if (::pipe(requests) != 0 || ::pipe(answers) != 0)
+    throw std::runtime_error("judge: no pipe for the student program");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, requests[0], 3);

@@ -122,6 +122,30 @@ R call(const std::string& name, const A&... args) {
   }
 }
 
+/// The judge's handle on an object the student's program keeps (a stepper built once, stepped
+/// many times): made by the entry NAME/new, stepped by NAME/step (student.hpp: add_stepper).
+template <class State>
+class RemoteStepper {
+ public:
+  template <class... Args>
+  explicit RemoteStepper(std::string name, const Args&... args)
+      : name_(std::move(name)), id_(call<long>(name_ + "/new", args...)) {}
+  State step(const State& u) const { return call<State>(name_ + "/step", id_, u); }
+
+ private:
+  std::string name_;
+  long id_;
+};
+
+/// A one-step method's call, step(f, t, u, dt) → u_{k+1} (explicit Euler, midpoint, RK4): f, the
+/// right-hand side f(t, u), crosses as a callback. The entry is "METHOD/" + key<State>().
+template <class State, class Rhs>
+State call_one_step(const std::string& method, const Rhs& f, typename State::Scalar t, const State& u,
+                    typename State::Scalar dt) {
+  using S = typename State::Scalar;
+  return call<State>(method + "/" + key<State>(), callback<State(S, const State&)>(f), t, u, dt);
+}
+
 /// n steps x ← name(x, rest…) from x0, run in the student's program (harness: add_iterable):
 /// every state x_1 … x_n, or only the last (x0 when n = 0). A million calls across the pipe
 /// take about ten seconds; one call, milliseconds.

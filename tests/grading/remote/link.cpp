@@ -38,7 +38,8 @@ bool read_all(int fd, void* data, std::size_t size) {
 
 void Link::send(Kind kind, const std::vector<unsigned char>& body) {
   if (gone_) throw PeerGone("the other process has gone");
-  if (body.size() > kMaxMessage) throw ProtocolError("a message over " + std::to_string(kMaxMessage) + " bytes");
+  if (body.size() > kMaxMessage)
+    throw ProtocolError("a message over " + std::to_string(kMaxMessage) + " bytes");
   const std::uint32_t header[2] = {std::uint32_t(kind), std::uint32_t(body.size())};
   if (!write_all(out_, header, sizeof header) || !write_all(out_, body.data(), body.size())) {
     gone_ = true;
@@ -69,12 +70,18 @@ void rethrow(Reader& r) {
   const auto failure = get<Failure>(r);
   const auto text = get<std::string>(r).substr(0, 2000);
   switch (failure) {
-    case Failure::invalid_argument: throw std::invalid_argument(text);
-    case Failure::domain_error: throw std::domain_error(text);
-    case Failure::out_of_range: throw std::out_of_range(text);
-    case Failure::logic_error: throw std::logic_error(text);
-    case Failure::runtime_error: throw std::runtime_error(text);
-    default: throw std::runtime_error("an exception of an unknown type: " + text);
+    case Failure::invalid_argument:
+      throw std::invalid_argument(text);
+    case Failure::domain_error:
+      throw std::domain_error(text);
+    case Failure::out_of_range:
+      throw std::out_of_range(text);
+    case Failure::logic_error:
+      throw std::logic_error(text);
+    case Failure::runtime_error:
+      throw std::runtime_error(text);
+    default:
+      throw std::runtime_error("an exception of an unknown type: " + text);
   }
 }
 

@@ -18,13 +18,27 @@
 
 namespace kit::remote {
 
-enum class Kind : std::uint32_t { call = 1, result = 2, error = 3, callback = 4, callback_result = 5, callback_error = 6 };
+enum class Kind : std::uint32_t {
+  call = 1,
+  result = 2,
+  error = 3,
+  callback = 4,
+  callback_result = 5,
+  callback_error = 6
+};
 
 /// Bytes in one message, at most: the largest a graded test sends is under 8 MiB.
 inline constexpr std::uint32_t kMaxMessage = 64u << 20;
 
 /// The kinds of exception that cross, so that a test expecting std::invalid_argument sees one.
-enum class Failure : std::uint8_t { other, invalid_argument, domain_error, out_of_range, logic_error, runtime_error };
+enum class Failure : std::uint8_t {
+  other,
+  invalid_argument,
+  domain_error,
+  out_of_range,
+  logic_error,
+  runtime_error
+};
 
 /// The other end went away (exited, crashed, was killed): every later call fails at once.
 struct PeerGone : std::runtime_error {

@@ -1,7 +1,8 @@
 #pragma once
 // The student's end: a small program made of the student's exercise file, the kit headers that
 // exercise may use, one harness (tests/grading/harness/) and student_main.cpp. It reads calls on
-// descriptor 3, runs the student's function, and writes what it returned on descriptor 4. It
+// descriptor 3, runs the student's function, and writes what it returned on descriptor 4 (or the two
+// that KIT_JUDGE_FDS names, as the grader sets them). It
 // judges nothing: whatever it writes is only a value for the judge to check.
 #include <map>
 #include <stdexcept>
@@ -60,7 +61,8 @@ struct Codec<Callback<Sig>> {
 struct Iterate {
   template <class R, class First, class... Rest, class E, class F>
   static void add(E& entries, const std::string& name, F f) {
-    static_assert(std::is_same_v<Value<First>, R>, "an iterable step takes its state first and returns the next");
+    static_assert(std::is_same_v<Value<First>, R>,
+                  "an iterable step takes its state first and returns the next");
     const auto steps = [](long n) {
       if (n < 0 || n > 10'000'000) throw std::invalid_argument("steps out of range [0, 1e7]");
       return n;
@@ -119,6 +121,25 @@ class Objects {
  private:
   std::vector<std::unique_ptr<T>> objects_;
 };
+
+/// The student's side of judge.hpp's RemoteStepper: a class T built by T(args…), stepped by
+/// T::step(u), kept here and named by number.
+template <class T, class State, class... Args>
+void add_stepper(Entries& entries, const std::string& name) {
+  static Objects<T> objects;
+  entries.add(name + "/new", [](const Args&... args) { return objects.keep(std::make_unique<T>(args...)); });
+  entries.add(name + "/step", [](long id, const State& u) -> State { return objects.at(id).step(u); });
+}
+
+/// The student's side of judge.hpp's call_one_step: `method` for each of the state types,
+/// calling step(f, t, u, dt) with f a Callback.
+template <class... States, class Step>
+void add_one_step(Entries& entries, const std::string& method, Step step) {
+  (entries.add(method + "/" + key<States>(),
+               [step](Callback<States(typename States::Scalar, const States&)> f, typename States::Scalar t,
+                      const States& u, typename States::Scalar dt) -> States { return step(f, t, u, dt); }),
+   ...);
+}
 
 }  // namespace kit::remote
 

@@ -122,7 +122,8 @@ struct Codec {
       w.scalar(value);
     } else {
       static_assert(has_fields<T>::value, "no fields(T&) for this type: add one to kit_fields.hpp");
-      std::apply([&](const auto&... member) { (remote::put(w, member), ...); }, fields(const_cast<T&>(value)));
+      std::apply([&](const auto&... member) { (remote::put(w, member), ...); },
+                 fields(const_cast<T&>(value)));
     }
   }
   static void get(Reader& r, T& value) {
@@ -248,8 +249,12 @@ struct Codec<Eigen::Matrix<S, R, C, O, MR, MC>> {
 
 template <class S, int O>
 struct Codec<Eigen::Quaternion<S, O>> {
-  static void put(Writer& w, const Eigen::Quaternion<S, O>& q) { remote::put(w, Eigen::Matrix<S, 4, 1>(q.coeffs())); }
-  static void get(Reader& r, Eigen::Quaternion<S, O>& q) { q.coeffs() = remote::get<Eigen::Matrix<S, 4, 1>>(r); }
+  static void put(Writer& w, const Eigen::Quaternion<S, O>& q) {
+    remote::put(w, Eigen::Matrix<S, 4, 1>(q.coeffs()));
+  }
+  static void get(Reader& r, Eigen::Quaternion<S, O>& q) {
+    q.coeffs() = remote::get<Eigen::Matrix<S, 4, 1>>(r);
+  }
 };
 
 /// Sparse matrices: the size, then every stored entry as (row, column, value); an entry outside
@@ -279,9 +284,8 @@ struct Codec<Eigen::SparseMatrix<S, O, I>> {
       entries.emplace_back(I(i), I(j), value);
     }
     m.resize(Eigen::Index(rows), Eigen::Index(cols));
-    m.setFromTriplets(entries.begin(), entries.end(), [](const S&, const S&) -> S {
-      throw ProtocolError("a sparse entry stored twice");
-    });
+    m.setFromTriplets(entries.begin(), entries.end(),
+                      [](const S&, const S&) -> S { throw ProtocolError("a sparse entry stored twice"); });
     m.makeCompressed();
   }
 };

@@ -9,7 +9,7 @@
 namespace kit {
 /// The input holds references: its members travel one by one.
 inline void assemble_implicit_system(const ImplicitSystemInput& in, SparseMatrix& A, Eigen::VectorXd& b) {
-  remote::call<void>("assemble_implicit_system", in.springs, in.x, in.v, in.f, in.masses, in.stiffness, in.drag, in.h,
-                     remote::inout(A), remote::inout(b));
+  remote::call<void>("assemble_implicit_system", in.springs, in.x, in.v, in.f, in.masses, in.stiffness,
+                     in.drag, in.h, remote::inout(A), remote::inout(b));
 }
 }  // namespace kit

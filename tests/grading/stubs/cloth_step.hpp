@@ -12,8 +12,10 @@
 namespace kit {
 template <class Forces>
 void symplectic_cloth_step(NodeArray& x, NodeArray& v, const Eigen::VectorXd& masses,
-                           const std::vector<std::int32_t>& pins, const Forces& forces, NodeArray& f, double dt) {
+                           const std::vector<std::int32_t>& pins, const Forces& forces, NodeArray& f,
+                           double dt) {
   remote::call<void>("symplectic_cloth_step", remote::inout(x), remote::inout(v), masses, pins,
-                     remote::callback<void(const NodeArray&, const NodeArray&, NodeArray&)>(forces), remote::inout(f), dt);
+                     remote::callback<void(const NodeArray&, const NodeArray&, NodeArray&)>(forces),
+                     remote::inout(f), dt);
 }
 }  // namespace kit

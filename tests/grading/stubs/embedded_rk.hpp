@@ -9,9 +9,10 @@
 
 namespace kit {
 template <class Rhs, class State>
-EmbeddedStep<State> embedded_step(const Rhs& f, const ButcherTableau& tableau, double t, const State& y, double h,
-                                  const State& k1) {
+EmbeddedStep<State> embedded_step(const Rhs& f, const ButcherTableau& tableau, double t, const State& y,
+                                  double h, const State& k1) {
   return remote::call<EmbeddedStep<State>>("embedded_step/" + remote::key<State>(),
-                                           remote::callback<State(double, const State&)>(f), tableau, t, y, h, k1);
+                                           remote::callback<State(double, const State&)>(f), tableau, t, y, h,
+                                           k1);
 }
 }  // namespace kit

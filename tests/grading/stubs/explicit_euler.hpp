@@ -12,20 +12,15 @@ namespace kit {
 
 template <class Rhs, class State>
 State explicit_euler_step(const Rhs& f, typename State::Scalar t, const State& u, typename State::Scalar dt) {
-  using S = typename State::Scalar;
-  return remote::call<State>("explicit_euler_step/" + remote::key<State>(), remote::callback<State(S, const State&)>(f),
-                             t, u, dt);
+  return remote::call_one_step("explicit_euler_step", f, t, u, dt);
 }
 
 template <int N, class Scalar = double>
-class ExplicitEulerAffine {
+class ExplicitEulerAffine : public remote::RemoteStepper<Vec<N, Scalar>> {
  public:
-  ExplicitEulerAffine(const AffineSystem<N, Scalar>& system, Scalar dt) : id_(remote::call<long>(entry("new"), system, dt)) {}
-  Vec<N, Scalar> step(const Vec<N, Scalar>& u) const { return remote::call<Vec<N, Scalar>>(entry("step"), id_, u); }
-
- private:
-  static std::string entry(const char* what) { return "ExplicitEulerAffine/" + remote::key<Vec<N, Scalar>>() + "/" + what; }
-  long id_;
+  ExplicitEulerAffine(const AffineSystem<N, Scalar>& system, Scalar dt)
+      : remote::RemoteStepper<Vec<N, Scalar>>("ExplicitEulerAffine/" + remote::key<Vec<N, Scalar>>(), system,
+                                              dt) {}
 };
 
 }  // namespace kit

@@ -7,8 +7,11 @@
 #include "remote/judge.hpp"
 
 namespace kit {
-inline Matrix2 stvk_stress(const Matrix2& E, const Lame& lame) { return remote::call<Matrix2>("stvk_stress", E, lame); }
-inline ElementForces stvk_forces(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume, const Lame& lame) {
+inline Matrix2 stvk_stress(const Matrix2& E, const Lame& lame) {
+  return remote::call<Matrix2>("stvk_stress", E, lame);
+}
+inline ElementForces stvk_forces(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume,
+                                 const Lame& lame) {
   return remote::call<ElementForces>("stvk_forces", F, rest_inverse, rest_volume, lame);
 }
 }  // namespace kit

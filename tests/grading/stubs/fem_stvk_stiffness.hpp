@@ -7,7 +7,8 @@
 #include "remote/judge.hpp"
 
 namespace kit {
-inline Matrix9 stvk_stiffness(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume, const Lame& lame) {
+inline Matrix9 stvk_stiffness(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume,
+                              const Lame& lame) {
   return remote::call<Matrix9>("stvk_stiffness", F, rest_inverse, rest_volume, lame);
 }
 }  // namespace kit

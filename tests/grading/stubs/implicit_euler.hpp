@@ -11,14 +11,11 @@
 namespace kit {
 
 template <int N, class Scalar = double>
-class ImplicitEulerAffine {
+class ImplicitEulerAffine : public remote::RemoteStepper<Vec<N, Scalar>> {
  public:
-  ImplicitEulerAffine(const AffineSystem<N, Scalar>& system, Scalar dt) : id_(remote::call<long>(entry("new"), system, dt)) {}
-  Vec<N, Scalar> step(const Vec<N, Scalar>& u) const { return remote::call<Vec<N, Scalar>>(entry("step"), id_, u); }
-
- private:
-  static std::string entry(const char* what) { return "ImplicitEulerAffine/" + remote::key<Vec<N, Scalar>>() + "/" + what; }
-  long id_;
+  ImplicitEulerAffine(const AffineSystem<N, Scalar>& system, Scalar dt)
+      : remote::RemoteStepper<Vec<N, Scalar>>("ImplicitEulerAffine/" + remote::key<Vec<N, Scalar>>(), system,
+                                              dt) {}
 };
 
 }  // namespace kit

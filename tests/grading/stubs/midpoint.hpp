@@ -6,7 +6,6 @@
 namespace kit {
 template <class Rhs, class State>
 State midpoint_step(const Rhs& f, typename State::Scalar t, const State& u, typename State::Scalar dt) {
-  using S = typename State::Scalar;
-  return remote::call<State>("midpoint_step/" + remote::key<State>(), remote::callback<State(S, const State&)>(f), t, u, dt);
+  return remote::call_one_step("midpoint_step", f, t, u, dt);
 }
 }  // namespace kit

@@ -7,5 +7,7 @@
 #include "remote/judge.hpp"
 
 namespace kit {
-inline double pi_step_factor(const PiController& c, double err) { return remote::call<double>("pi_step_factor", c, err); }
+inline double pi_step_factor(const PiController& c, double err) {
+  return remote::call<double>("pi_step_factor", c, err);
+}
 }  // namespace kit

@@ -9,5 +9,7 @@
 #include "remote/judge.hpp"
 
 namespace kit {
-inline AffineSystem<2> spring_system(const Spring& spring) { return remote::call<AffineSystem<2>>("spring_system", spring); }
+inline AffineSystem<2> spring_system(const Spring& spring) {
+  return remote::call<AffineSystem<2>>("spring_system", spring);
+}
 }  // namespace kit

@@ -16,8 +16,8 @@ namespace kit {
 /// The particles come back as the student's function left them; when it kept their storage (no
 /// array reallocated, which the student's program reports), they are copied into the judge's own
 /// storage, and otherwise replace it, so that a test of "nothing reallocated" sees what happened.
-inline long age_and_kill(Particles& particles, float dt, const DeathRules& rules, const std::vector<bool>& bursts_on_death,
-                         std::vector<Death>& deaths) {
+inline long age_and_kill(Particles& particles, float dt, const DeathRules& rules,
+                         const std::vector<bool>& bursts_on_death, std::vector<Death>& deaths) {
   Particles after;
   const auto [removed, kept_storage] = remote::call<std::pair<long, bool>>(
       "age_and_kill", remote::replaced(particles, after), dt, rules, bursts_on_death, remote::inout(deaths));
@@ -27,7 +27,8 @@ inline long age_and_kill(Particles& particles, float dt, const DeathRules& rules
   }
   particles.clear();
   for (std::size_t i = 0; i < after.size(); ++i) particles.add(ParticleSpawn{});
-  remote::Codec<Particles>::each_pair(after, particles, [](auto& from, auto& to) { std::copy(from.begin(), from.end(), to.begin()); });
+  remote::Codec<Particles>::each_pair(
+      after, particles, [](auto& from, auto& to) { std::copy(from.begin(), from.end(), to.begin()); });
   return removed;
 }
 }  // namespace kit

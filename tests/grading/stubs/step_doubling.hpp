@@ -27,8 +27,8 @@ inline auto fields(StepDoubling& o) {
 template <class Step, class State>
 AdaptiveRun<State> step_doubling(Step&& step, double t0, State u, double t_end, const StepDoubling& options) {
   return remote::call<AdaptiveRun<State>>("step_doubling/" + remote::key<State>(),
-                                          remote::callback<State(double, const State&, double)>(step), t0, u, t_end,
-                                          options);
+                                          remote::callback<State(double, const State&, double)>(step), t0, u,
+                                          t_end, options);
 }
 
 }  // namespace kit

@@ -12,7 +12,8 @@ template <class Accel, int N, class Scalar>
 Vec<N, Scalar> symplectic_euler_step(const Accel& accel, Scalar t, const Vec<N, Scalar>& u, Scalar dt) {
   using Half = Vec<N / 2, Scalar>;
   return remote::call<Vec<N, Scalar>>("symplectic_euler_step/" + remote::key<Vec<N, Scalar>>(),
-                                      remote::callback<Half(Scalar, const Half&, const Half&)>(accel), t, u, dt);
+                                      remote::callback<Half(Scalar, const Half&, const Half&)>(accel), t, u,
+                                      dt);
 }
 }  // namespace kit
 

@@ -4,5 +4,7 @@
 
 namespace kit {
 template <int N, class Scalar>
-auto fields(AffineSystem<N, Scalar>& s) { return std::tie(s.A, s.b); }
+auto fields(AffineSystem<N, Scalar>& s) {
+  return std::tie(s.A, s.b);
+}
 }  // namespace kit

@@ -9,7 +9,9 @@
 namespace kit {
 inline auto fields(SpringFamily& f) { return std::tie(f.stiffness, f.damping); }
 inline auto fields(SpringLayout& l) { return std::tie(l.structural, l.shear, l.bend, l.bend_layout); }
-inline auto fields(ClothGrid& g) { return std::tie(g.nx, g.ny, g.width, g.height, g.origin, g.u, g.v, g.areal_density); }
+inline auto fields(ClothGrid& g) {
+  return std::tie(g.nx, g.ny, g.width, g.height, g.origin, g.u, g.v, g.areal_density);
+}
 }  // namespace kit
 
 namespace kit::remote {
@@ -24,7 +26,8 @@ struct Codec<Springs> {
     remote::get(r, s.a), remote::get(r, s.b), remote::get(r, s.rest), remote::get(r, s.stiffness);
     remote::get(r, s.damping), remote::get(r, s.kind);
     const std::size_t n = s.a.size();
-    if (s.b.size() != n || s.rest.size() != n || s.stiffness.size() != n || s.damping.size() != n || s.kind.size() != n)
+    if (s.b.size() != n || s.rest.size() != n || s.stiffness.size() != n || s.damping.size() != n ||
+        s.kind.size() != n)
       throw ProtocolError("a spring list whose arrays differ in length");
   }
 };

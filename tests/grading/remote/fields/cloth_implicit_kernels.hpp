@@ -8,5 +8,7 @@
 #include "cloth.hpp"
 
 namespace kit {
-inline auto fields(PcgResult& p) { return std::tie(p.x, p.iterations, p.residual, p.converged, p.negative_curvature); }
+inline auto fields(PcgResult& p) {
+  return std::tie(p.x, p.iterations, p.residual, p.converged, p.negative_curvature);
+}
 }  // namespace kit

@@ -10,5 +10,7 @@ inline auto fields(ButcherTableau& t) {
   return std::tie(t.name, t.c, t.a, t.b, t.b_hat, t.order, t.embedded_order, t.fsal);
 }
 template <class State>
-auto fields(EmbeddedStep<State>& s) { return std::tie(s.y, s.error, s.last_stage, s.evaluations); }
+auto fields(EmbeddedStep<State>& s) {
+  return std::tie(s.y, s.error, s.last_stage, s.evaluations);
+}
 }  // namespace kit

@@ -15,13 +15,15 @@
 namespace kit {
 inline auto fields(Spread& s) { return std::tie(s.mean, s.variance); }
 inline auto fields(Emitter& e) {
-  return std::tie(e.name, e.shape, e.position, e.axis, e.radius, e.angle_deg, e.rate, e.speed, e.lifetime, e.size,
-                  e.colour, e.colour_variance, e.alpha, e.colour_rate, e.alpha_rate, e.size_rate, e.blend, e.texture,
-                  e.burst_only, e.on_death, e.inherit_velocity, e.first_frame, e.last_frame);
+  return std::tie(e.name, e.shape, e.position, e.axis, e.radius, e.angle_deg, e.rate, e.speed, e.lifetime,
+                  e.size, e.colour, e.colour_variance, e.alpha, e.colour_rate, e.alpha_rate, e.size_rate,
+                  e.blend, e.texture, e.burst_only, e.on_death, e.inherit_velocity, e.first_frame,
+                  e.last_frame);
 }
 inline auto fields(DeathRules& d) { return std::tie(d.alpha_below, d.region); }
 inline auto fields(ParticleSpawn& p) {
-  return std::tie(p.x, p.y, p.z, p.vx, p.vy, p.vz, p.lifetime, p.size, p.r, p.g, p.b, p.alpha, p.emitter, p.id);
+  return std::tie(p.x, p.y, p.z, p.vx, p.vy, p.vz, p.lifetime, p.size, p.r, p.g, p.b, p.alpha, p.emitter,
+                  p.id);
 }
 }  // namespace kit
 
@@ -34,7 +36,8 @@ struct Codec<Particles> {
   template <class F>
   static void each_pair(Particles& a, Particles& b, F&& f) {
     f(a.x, b.x), f(a.y, b.y), f(a.z, b.z), f(a.vx, b.vx), f(a.vy, b.vy), f(a.vz, b.vz), f(a.age, b.age);
-    f(a.lifetime, b.lifetime), f(a.size_m, b.size_m), f(a.r, b.r), f(a.g, b.g), f(a.b, b.b), f(a.alpha, b.alpha);
+    f(a.lifetime, b.lifetime), f(a.size_m, b.size_m), f(a.r, b.r), f(a.g, b.g), f(a.b, b.b),
+        f(a.alpha, b.alpha);
     f(a.emitter, b.emitter), f(a.id, b.id);
   }
   template <class F>
@@ -75,7 +78,8 @@ inline void restore(SpriteRandom& random, const RandomBytes& bytes) {
   text << engine;  // the n words of state, then the position (libstdc++)
   const std::string state = text.str();
   const auto position = std::stoull(state.substr(state.find_last_of(' ') + 1));
-  if (position > std::mt19937_64::state_size) throw ProtocolError("a random generator in an impossible state");
+  if (position > std::mt19937_64::state_size)
+    throw ProtocolError("a random generator in an impossible state");
   std::memcpy(static_cast<void*>(&random), bytes.data(), sizeof random);
 }
 }  // namespace kit::remote
