@@ -1,9 +1,9 @@
 #pragma once
 // The student's end: a small program made of the student's exercise file, the kit headers that
 // exercise may use, one harness (tests/grading/harness/) and student_main.cpp. It reads calls on
-// descriptor 3, runs the student's function, and writes what it returned on descriptor 4 (or the two
-// that KIT_JUDGE_FDS names, as the grader sets them). It
-// judges nothing: whatever it writes is only a value for the judge to check.
+// descriptor 3 (or the first that KIT_JUDGE_FDS names, as the grader sets it), runs the student's
+// function, and writes what it returned on descriptor 4 (or the second). It judges nothing:
+// whatever it writes is only a value for the judge to check.
 #include <map>
 #include <stdexcept>
 #include <memory>
