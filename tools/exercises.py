@@ -19,6 +19,7 @@ Everything else is copied as it is. Usage:
     exercises.py list SOLUTIONS                 print "id<TAB>file" for every region
 """
 import difflib
+import json
 import pathlib
 import re
 import sys
@@ -38,7 +39,25 @@ kit's repository. To work on the exercises, copy it somewhere of your own:
 Each `// TODO(ex N.k): hint` marks code to write. Until you write it, the placeholder
 below the TODO throws an error naming the exercise and the file, so a chapter or a test
 that needs it stops with that message instead of printing wrong numbers.
+
+`./kit grade` compiles each file on its own, against the standard library, Eigen, {fmt} and
+only the kit headers its exercises may use (`tests/grading/points.json`); nothing else of the
+kit is there to include or call. Each file may include:
 """
+
+
+def readme(solutions):
+    """README.md of exercises/: the text above, then each file's allowed kit headers."""
+    points = pathlib.Path(solutions).resolve().parent / "tests" / "grading" / "points.json"
+    rows = {}
+    for e in json.loads(points.read_text(encoding="utf-8"))["exercises"] if points.exists() else []:
+        ids, headers = rows.setdefault(e["file"], ([], set()))
+        ids.append(e["id"])
+        headers.update(h for h in e["headers"] if h != "kit/not_implemented.hpp")
+    table = ["", "| file | exercises | kit headers |", "|---|---|---|"]
+    table += [f"| `{name}` | {', '.join(ids)} | {', '.join(f'`<{h}>`' for h in sorted(headers)) or 'none'} |"
+              for name, (ids, headers) in sorted(rows.items())]
+    return README + "\n".join(table) + "\n"
 
 
 class MarkerError(Exception):
@@ -79,7 +98,7 @@ def transform(text, relpath, solved=frozenset()):
 
 def expected_tree(solutions, solved=frozenset()):
     """{relative path: text} of exercises/, with the regions in `solved` left solved."""
-    files = {"README.md": README}
+    files = {"README.md": readme(solutions)}
     for path in sorted(solutions.rglob("*")):
         if path.is_file() and path.name != "README.md":
             rel = path.relative_to(solutions).as_posix()
