@@ -211,7 +211,8 @@ class Batch:
             used = sum(p.stat().st_size for p in work.rglob("*") if p.is_file())
             entry.mkdir()
             keep_tail(entry / "compile.log", log)
-            if code == 0 and (work / "program").is_file():
+            built = work / "program"  # a regular file: a link the compile planted could point anywhere
+            if code == 0 and built.is_file() and not built.is_symlink():
                 os.replace(work / "program", entry / "program")
             shutil.rmtree(work)
             (entry / "done").touch()
