@@ -39,7 +39,8 @@ The six submissions, generated from the solution markers:
                 is cut at 1 MiB as it is written and 64 KiB of it is kept.
 Checks: class.csv is right; every attacked item scores 0 (integrity, compile error or fail);
 the untouched items still score; the compile error names the student's file and line;
-regrading writes the same reports byte for byte; nothing outside the grade trees changed.
+regrading with the batch's seed writes the same reports byte for byte; --no-sandbox still grades
+the complete submission at full marks and says so; nothing outside the grade trees changed.
 
 Usage: grade_a_class.py WORK_DIR
 """
@@ -277,6 +278,19 @@ def main(argv):
     if again.returncode != 0 or reports_before != reports_after:
         changed_reports = sorted(k for k in reports_before if reports_before[k] != reports_after.get(k))
         problems.append(f"regrading changed the reports: {changed_reports} (exit {again.returncode})")
+
+    # Without the sandbox the judges still decide, and every report says it was not sandboxed.
+    bare = subprocess.run([str(ROOT / "kit"), "grade", "--no-sandbox", "--out", str(work / "bare"),
+                           str(classroom / "complete")], cwd=ROOT, capture_output=True, text=True)
+    bare_report = work / "bare" / "complete" / "grade.json"
+    if bare.returncode != 0 or not bare_report.exists():
+        problems.append(f"--no-sandbox: ./kit grade exited {bare.returncode}: {bare.stderr[-500:]}")
+    else:
+        graded = json.loads(bare_report.read_text(encoding="utf-8"))
+        said = "Not sandboxed" in (work / "bare" / "complete" / "grade.md").read_text(encoding="utf-8")
+        if graded["points"] != total or graded["sandboxed"] or not said:
+            problems.append(f"--no-sandbox: {graded['points']} points, sandboxed {graded['sandboxed']}, "
+                            f"grade.md says so: {said}")
 
     after = {str(p): hashlib.sha1(p.read_bytes()).hexdigest() for p in watched}
     changed = [p for p in before if before[p] != after.get(p)]
