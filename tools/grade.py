@@ -394,7 +394,7 @@ def batch_command(args):
     out = pathlib.Path(args.out).resolve()
     folders = [pathlib.Path(f).resolve() for f in args.folders]
     try:
-        sandbox = Sandbox(ROOT, hidden=[out, ROOT / "build", *folders], enabled=not args.no_sandbox)
+        sandbox = Sandbox(enabled=not args.no_sandbox)
     except SandboxUnavailable as why:
         print(f"grade: cannot sandbox the students' code: {why}.\n"
               "Install bubblewrap, or pass --no-sandbox to grade without it (every report then says so).",

@@ -92,7 +92,7 @@ def main(argv):
     classmate.mkdir(parents=True)
     (classmate / "rk4.hpp").write_text("a classmate's work\n")
     os.environ["KIT_TEST_SECRET"] = "do-not-leak"
-    sandbox = Sandbox(ROOT, hidden=[work / "out", classmate])
+    sandbox = Sandbox()
 
     # The hiding checks need a shell that starts processes (pipes), which a graded test may not.
     shell_limits = Limits(TEST_MEMORY, 60, True)

@@ -2,25 +2,6 @@
 import re
 
 
-def compile_errors(build_log, student_files):
-    """{target name: "file:line:col: error: …"} from a `ninja -k 0` log. The first error in a
-    student's own file is preferred: that is where the fix goes."""
-    errors, current, lines = {}, None, {}
-    for line in build_log.splitlines():
-        failed = re.match(r"FAILED: .*?(grade_ex[\w]+)", line)
-        if failed:
-            current = failed.group(1)
-            lines.setdefault(current, [])
-            continue
-        if current and re.search(r"\berror\b", line):
-            lines[current].append(line.strip())
-    for target, found in lines.items():
-        own = [l for l in found if any(re.search(rf"(^|/){re.escape(f)}:\d+", l) for f in student_files)]
-        chosen = (own or found or ["did not compile (see build.log)"])[0]
-        errors[target] = re.sub(r"^.*?/([^/]+:\d+:\d+: )", r"\1", chosen)[:400]
-    return errors
-
-
 def first_error(log, student_file):
     """The first compiler error of a student's program, preferring one in the student's own file,
     with the path cut to the file's name; or the log's last line (a limit that stopped it)."""

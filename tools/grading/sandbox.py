@@ -1,18 +1,19 @@
-"""The sandbox every process that reads or runs student code goes through (bubblewrap).
+"""The sandbox every process that compiles or runs student code goes through (bubblewrap).
 
   - nothing of the machine's file system but what the tools need, read-only: /usr, the /bin,
     /sbin, /lib* links (or folders) as the machine has them, the dynamic loader's cache and the
-    alternatives links of /etc; the kit itself, read-only; and the submission's own grade tree,
-    writable for the build and read-only for the tests. No /home, /root, /var, /etc/passwd…;
-  - in the kit, solutions/ and .git, every other submission, the grade trees of the batch and the
-    kit's own build folder are hidden (empty in the sandbox);
-  - a private /tmp for a build, and no writable place at all for a test (/dev is read-only);
-    no network, no other process visible (new namespaces), no capabilities (so no mount can be
-    undone, even when the grader runs as root), an empty environment (PATH, HOME=/tmp and the
-    evidence descriptor only), no stdin, and the process dies with the grader;
+    alternatives links of /etc; then only the folders the step names (Sandbox.confined): for a
+    compile, the one student file, the exercise's allowed headers and objects, the harness and
+    the batch's precompiled header, read-only, and its own scratch folder, writable; for a run,
+    the program, read-only. Nothing of the kit but the confinement script, no other submission,
+    no /home, /root, /var, /etc/passwd…;
+  - no writable place at all for a run (/dev is read-only); no network, no other process visible
+    (new namespaces), no capabilities (so no mount can be made or undone, even when the grader
+    runs as root), an empty environment (PATH, HOME, LANG and what the step passes), no stdin,
+    and the process dies with the grader;
   - limits (grading/confine.py, the last step before the command): address space, the size of
-    any file written, CPU seconds per process and no core dump; a graded test may not start a
-    process or a thread (a seccomp filter kills it on fork/clone); plus the grader's wall-clock
+    any file written, CPU seconds per process and no core dump; a student's program may not start
+    a process or a thread (a seccomp filter kills it on fork/clone); plus the grader's wall-clock
     timeout.
 Without bubblewrap (or with --no-sandbox) commands run bare, with the same limits, and every
 report says so."""
@@ -73,10 +74,7 @@ def system_binds():
 
 
 class Sandbox:
-    def __init__(self, kit_root, hidden, enabled=True):
-        self.kit_root = pathlib.Path(kit_root)
-        self.hidden = [pathlib.Path(p) for p in hidden]
-        self.shared = []  # folders every sandboxed command may read (the batch's precompiled header)
+    def __init__(self, enabled=True):
         self.enabled = enabled
         if enabled:
             self._probe()
@@ -93,34 +91,11 @@ class Sandbox:
 
     def _probe_limits(self):
         """The limits a graded test gets can be set here (the seccomp filter knows this machine)."""
-        probe = subprocess.run(self.wrap(["true"], self.kit_root, False, test_limits(10)),
+        probe = subprocess.run(self.confined(["true"], [], [], test_limits(10)),
                                capture_output=True, text=True, stdin=subprocess.DEVNULL)
         if probe.returncode != 0:
             raise SandboxUnavailable(f"cannot limit a graded test here: {probe.stdout.strip()[:300]}"
                                      f"{probe.stderr.strip()[:300]}")
-
-    def _kit(self):
-        """The kit, read-only, with its secrets hidden: solutions/, .git, and every hidden path
-        that lies inside it (other submissions, grade trees, the build folder)."""
-        args = ["--ro-bind", str(self.kit_root), str(self.kit_root)]
-        git = subprocess.run(["git", "-C", str(self.kit_root), "rev-parse", "--git-common-dir"],
-                             capture_output=True, text=True)
-        secrets = [self.kit_root / "solutions", self.kit_root / ".git", *self.hidden]
-        if git.returncode == 0 and git.stdout.strip():
-            secrets.append((self.kit_root / git.stdout.strip()).resolve())
-        root = self.kit_root.resolve()
-        for path in secrets:
-            if not path.resolve().is_relative_to(root):
-                continue  # outside the kit: not in the sandbox at all
-            if path.is_dir():
-                args += ["--tmpfs", str(path)]
-            elif path.exists():
-                args += ["--ro-bind", "/dev/null", str(path)]  # a .git file (worktree), say
-        return args
-
-    def share(self, folder):
-        """Makes `folder` readable, never writable, by every command wrapped from now on."""
-        self.shared.append(pathlib.Path(folder))
 
     def confined(self, command, readable, writable, limits, env=None, cwd=None, fsize=OUTPUT_LIMIT):
         """`command` seeing the machine's read-only part, the folders `readable` (read-only) and
@@ -143,23 +118,4 @@ class Sandbox:
                  "--setenv", "LANG", "C.UTF-8", "--setenv", "CCACHE_DISABLE", "1"] + extra
                 + ["--ro-bind", str(CONFINE), str(CONFINE)] + binds
                 + ["--remount-ro", "/", "--chdir", str(cwd or (writable or readable or ["/"])[0]), "--"]
-                + confine + command)
-
-    def wrap(self, command, tree, writable, limits, env=None):
-        """`command` confined to `tree` (a grade tree) under `limits`, with `env` as the only
-        variables it gets besides PATH, HOME, TMPDIR and LANG."""
-        extra = [word for key, value in sorted((env or {}).items()) for word in ("--setenv", key, value)]
-        confine = [PYTHON, "-I", "-S", str(CONFINE), "--as", str(limits.memory), "--fsize", str(OUTPUT_LIMIT),
-                   "--cpu", str(limits.cpu), *([] if limits.spawn else ["--no-spawn"]), "--"]
-        if not self.enabled:
-            return ["env", *[f"{k}={v}" for k, v in sorted((env or {}).items())]] + confine + command
-        # A build gets a private /tmp (the compiler's scratch files); a test, no writable place at
-        # all, so that it cannot fill the machine's memory with files in a tmpfs.
-        bind, scratch = (["--bind"], ["--tmpfs", "/tmp"]) if writable else (["--ro-bind"], [])
-        return (["bwrap", *system_binds(), "--dev", "/dev", "--remount-ro", "/dev", "--proc", "/proc", *scratch,
-                 "--unshare-all", "--die-with-parent", "--new-session", "--cap-drop", "ALL", "--clearenv",
-                 "--setenv", "PATH", "/usr/local/bin:/usr/bin:/bin", "--setenv", "HOME", "/tmp",
-                 "--setenv", "TMPDIR", "/tmp", "--setenv", "LANG", "C.UTF-8", "--setenv", "CCACHE_DISABLE", "1"]
-                + extra + self._kit() + [word for f in self.shared for word in ("--ro-bind", str(f), str(f))]
-                + [*bind, str(tree), str(tree), "--remount-ro", "/", "--chdir", str(tree), "--"]
                 + confine + command)
