@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
@@ -84,6 +85,20 @@ void remember(const std::filesystem::path& temporary, SlotKind kind = file_slot)
     }
 }
 
+// A test seam (tests/repo/interrupted_runs.py): with KIT_STOP_BEFORE_COMMIT=N in the
+// environment, the process stops itself (SIGSTOP) just before its N-th commit, the temporary
+// written and not yet in place. The test then signals it at a known point of its writing,
+// rather than at whatever moment its polling of the folder happens to catch, which on a busy
+// machine may come after the run has ended.
+void stop_before_commit_if_asked() {
+  static const long target = [] {
+    const char* text = std::getenv("KIT_STOP_BEFORE_COMMIT");
+    return text ? std::strtol(text, nullptr, 10) : 0L;
+  }();
+  static long commits = 0;
+  if (target > 0 && ++commits == target) ::raise(SIGSTOP);
+}
+
 void forget(const std::filesystem::path& temporary) {
   const std::string text = temporary.string();
   for (std::size_t i = 0; i < slots; ++i)
@@ -120,6 +135,7 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
 }
 
 void commit_file(const std::filesystem::path& temporary, const std::filesystem::path& path) {
+  stop_before_commit_if_asked();
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   forget(temporary);

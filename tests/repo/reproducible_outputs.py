@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
-"""Every chapter, run twice with the same flags and seed, writes byte-identical files and the
-same --json summary. Timings are the one exception, and they are named so: a file whose name
-holds "timing"; a summary field with "timing" in its name or a unit of time (seconds, ms, us,
-ns) as one of its words ("seconds", "scatter_ms", "ns_per_step"); a run's "estimate". PDFs count
-too: the runs set SOURCE_DATE_EPOCH, which fixes the creation date cairo would take from the
-clock (figure.cpp).
+"""Every chapter, run again with the same flags and seed as the suite's figures.NN run (the
+fixture that drew FIGURES_DIR/NN-name and wrote its summary beside it, NN-name.summary.json),
+writes byte-identical files and the same summary. Timings are the one exception, and they are
+named so: a file whose name holds "timing"; a summary field with "timing" in its name or a unit
+of time (seconds, ms, us, ns) as one of its words ("seconds", "scatter_ms", "ns_per_step"); a
+run's "estimate". PDFs count too: both runs set SOURCE_DATE_EPOCH, which fixes the creation date
+cairo would take from the clock (figure.cpp). The first run was made beside the rest of the
+suite, the second here: a busy machine changes nothing but timings.
 
-Usage: reproducible_outputs.py BIN_DIR WORK_DIR
+Usage: reproducible_outputs.py BIN_DIR WORK_DIR FIGURES_DIR EPOCH
 """
 import json
 import os
@@ -16,9 +18,6 @@ import subprocess
 import sys
 
 from chapter_binaries import chapter_binaries
-
-EPOCH = "1700000000"
-
 
 def is_timing_key(key):
     """A field named as a timing: "timing" in it, or a unit of time as one of its words; or a run's
@@ -38,24 +37,36 @@ def without_timings(value, out_dir):
     return value
 
 
-def run(binary, out_dir):
-    env = dict(os.environ, SOURCE_DATE_EPOCH=EPOCH)
+def outputs(out_dir, summary_text):
+    files = {str(p.relative_to(out_dir)): p.read_bytes() for p in sorted(out_dir.rglob("*")) if p.is_file()}
+    return without_timings(json.loads(summary_text), out_dir), files
+
+
+def run(binary, out_dir, epoch):
+    env = dict(os.environ, SOURCE_DATE_EPOCH=epoch)
     done = subprocess.run([str(binary), "--json", "--out", str(out_dir)], capture_output=True, text=True,
                           env=env, timeout=900)
     if done.returncode != 0:
         raise AssertionError(f"{binary.name}: exit {done.returncode}: {done.stderr.strip()[:400]}")
-    files = {str(p.relative_to(out_dir)): p.read_bytes() for p in sorted(out_dir.rglob("*")) if p.is_file()}
-    return without_timings(json.loads(done.stdout), out_dir), files
+    return outputs(out_dir, done.stdout)
+
+
+def drawn(figures, binary):
+    """The figures.NN run's files and summary."""
+    folder, summary = figures / binary.name, figures / f"{binary.name}.summary.json"
+    if not folder.is_dir() or not summary.is_file():
+        raise AssertionError(f"{binary.name}: no figures.{binary.name} run in {figures} (its folder and summary)")
+    return outputs(folder.resolve(), summary.read_text(encoding="utf-8"))
 
 
 def main(argv):
-    bin_dir, work = pathlib.Path(argv[1]), pathlib.Path(argv[2]).resolve()
+    bin_dir, work, figures, epoch = pathlib.Path(argv[1]), pathlib.Path(argv[2]).resolve(), pathlib.Path(argv[3]), argv[4]
     shutil.rmtree(work, ignore_errors=True)
     problems = []
     for binary in chapter_binaries(bin_dir):
         try:
-            first = run(binary, work / "first" / binary.name)
-            second = run(binary, work / "second" / binary.name)
+            first = drawn(figures, binary)
+            second = run(binary, work / binary.name, epoch)
         except (AssertionError, subprocess.TimeoutExpired) as error:
             problems.append(str(error))
             continue
@@ -63,7 +74,7 @@ def main(argv):
         found = []
         if summary_a != summary_b:
             keys = sorted(k for k in set(summary_a) | set(summary_b) if summary_a.get(k) != summary_b.get(k))
-            found.append(f"the --json summaries differ outside timings, under {keys}")
+            found.append(f"the summaries differ outside timings, under {keys}")
         if set(files_a) != set(files_b):
             found.append(f"different files: {sorted(set(files_a) ^ set(files_b))}")
         differing = sorted(n for n in set(files_a) & set(files_b)

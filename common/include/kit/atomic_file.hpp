@@ -20,7 +20,8 @@ void discard_temporary(const std::filesystem::path& temporary);
 /// the path when the write fails; no partial file is left behind.
 void write_file_atomic(const std::filesystem::path& path, std::string_view content);
 
-/// Renames a finished temporary file onto its final name.
+/// Renames a finished temporary file onto its final name. For tests, KIT_STOP_BEFORE_COMMIT=N
+/// in the environment makes the process stop itself (SIGSTOP) before its N-th commit.
 void commit_file(const std::filesystem::path& temporary, const std::filesystem::path& path);
 
 /// A private folder next to `beside` ("name.tmp-<pid>.d") for a helper program (gnuplot,
