@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <kit/atomic_file.hpp>
 #include <kit/whole_number.hpp>
 
 namespace kit {
@@ -54,6 +55,23 @@ void check_output_folder(const std::string& dir) {
     throw UsageError(fmt::format("--out '{}': {} is not writable", dir, existing.string()));
 }
 
+// --summary FILE: the file itself is written at the end, through a temporary; here its folder
+// must exist and be writable and FILE must not be a folder, so that a refused run costs nothing.
+void check_summary_file(const std::string& file) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path path = fs::absolute(file, error);
+  if (file.empty() || path.filename().empty())
+    throw UsageError(fmt::format("--summary '{}': expected a file name", file));
+  if (fs::is_directory(path, error))
+    throw UsageError(fmt::format("--summary '{}': a folder, not a file", file));
+  const fs::path folder = path.parent_path();
+  if (!fs::is_directory(folder, error))
+    throw UsageError(fmt::format("--summary '{}': the folder {} does not exist", file, folder.string()));
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw UsageError(fmt::format("--summary '{}': {} is not writable", file, folder.string()));
+}
+
 ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::string description)
     : chapter_(std::move(chapter)), app_(std::move(description), chapter_) {
   options_.out_dir = std::move(default_out_dir);
@@ -69,6 +87,9 @@ ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::st
   app_.add_flag("--show", options_.show, "also open each figure in a window when a display exists");
   app_.add_flag("--json", options_.json, "print one JSON summary object on stdout, and nothing else");
   app_.add_flag("--quiet", options_.quiet, "print nothing on stdout");
+  app_.add_option("--summary", options_.summary_file,
+                  "also write the JSON summary (as --json prints it) to FILE, whatever stdout shows")
+      ->type_name("FILE");
   // For the flag-table test: every numeric flag with its range, as JSON; not in --help.
   app_.add_flag("--flag-table", flag_table_requested_, "")->group("");
   summary_["chapter"] = chapter_;
@@ -177,7 +198,9 @@ int ChapterApp::run(int argc, const char* const* argv, const std::function<void(
   report_ = Report(text(), summary_);
   try {
     if (!options_.no_plot) check_output_folder(options_.out_dir);  // before any computation
+    if (!options_.summary_file.empty()) check_summary_file(options_.summary_file);
     body();
+    if (!options_.summary_file.empty()) write_file_atomic(options_.summary_file, summary_.dump(2) + "\n");
   } catch (const UsageError& e) {
     std::cerr << chapter_ << ": error: " << e.what() << "\n";
     return exit_code::usage;

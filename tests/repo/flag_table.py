@@ -8,9 +8,13 @@ the two ends of its range (just inside an open end), one past them for whole num
 flag at its lower end at once, every flag at its upper end at once, and a fixed sample of pairs
 of extremes. New chapters and new flags are covered with no extra work.
 
-Each single-flag case also runs as a person would, without --json: the same exit code, no
-nan or inf on stdout (whole words, any case: nan, -nan, inf, -inf, infinity), and on exit 2 the
-message on stderr names the flag (under --json as well).
+Each single-flag case runs as a person would, without --json, and writes its summary with
+--summary FILE: on exit 0 the file holds one JSON object with no NaN or Infinity, and stdout no
+nan or inf (whole words, any case: nan, -nan, inf, -inf, infinity); on exit 2 the message on
+stderr names the flag and no summary file is left. A refused case is run again under --json (a
+refusal costs nothing): the same exit code, and a message naming the flag. A valid case is not:
+its one run already gives its text and its summary, and the runs of several flags (the lower
+ends, the upper ends, the pairs) are made under --json.
 
 Usage: flag_table.py BIN_DIR [--seconds S]
 """
@@ -23,6 +27,7 @@ import random
 import re
 import subprocess
 import sys
+import tempfile
 
 LIMIT = 1e300  # a range end beyond this is "no bound": its extremes are 1e308 and -1e308
 NON_FINITE = re.compile(r"(?<![\w])[-+]?(nan|inf|infinity)(?![\w])", re.IGNORECASE)
@@ -68,9 +73,9 @@ def cases_for(table):
     return cases
 
 
-def run_once(binary, case, seconds, json_mode):
+def run_once(binary, case, seconds, json_mode, summary=None):
     """(exit code, stdout, stderr), or a problem (a string) when it did not end in time."""
-    args = [str(binary), "--no-plot"] + (["--json"] if json_mode else [])
+    args = [str(binary), "--no-plot"] + (["--json"] if json_mode else []) + (["--summary", summary] if summary else [])
     for flag, value in case:
         args += [flag, value]
     try:
@@ -80,45 +85,71 @@ def run_once(binary, case, seconds, json_mode):
     return done.returncode, done.stdout, done.stderr
 
 
+def summary_problem(text):
+    """Why `text` is not one JSON summary free of NaN and Infinity, or None."""
+    try:
+        summary = json.loads(text)
+    except ValueError:
+        return f"not one JSON object: {text[:200]!r}"
+    dumped = json.dumps(summary)
+    return "the summary holds NaN or Infinity" if "NaN" in dumped or "Infinity" in dumped else None
+
+
+def refusal_problem(name, err, single):
+    if not err.strip():
+        return f"{name}: exit 2 without a message"
+    if single and single not in err:
+        return f"{name}: exit 2, but the message does not name {single}: {err.strip()[:300]}"
+    return None
+
+
 def run(binary, case, seconds):
-    """The problems of one case: its --json run and, for a single flag, its text run."""
+    """The problems of one case: a single flag's text run (and, refused, its --json run), or a
+    run of several flags under --json."""
     words = " ".join(f"{f} {v!r}" for f, v in case)
     name = f"{binary.name} {words}"
     single = case[0][0] if len(case) == 1 else None
-    problems = []
-    first = run_once(binary, case, seconds, json_mode=True)
-    if isinstance(first, str):
-        return [f"{name}: {first}"]
-    code, out, err = first
-    if code == 2:
-        if not err.strip():
-            problems.append(f"{name}: exit 2 without a message")
-        elif single and single not in err:
-            problems.append(f"{name}: exit 2, but the message does not name {single}: {err.strip()[:300]}")
-    elif code != 0:
-        return [f"{name}: exit {code}: {err.strip()[:300]}"]
-    else:
-        try:
-            summary = json.loads(out)
-            text = json.dumps(summary)
-            if "NaN" in text or "Infinity" in text:
-                problems.append(f"{name}: the summary holds NaN or Infinity")
-        except ValueError:
-            problems.append(f"{name}: exit 0 but stdout is not one JSON object: {out[:200]!r}")
     if not single:
+        first = run_once(binary, case, seconds, json_mode=True)
+        if isinstance(first, str):
+            return [f"{name}: {first}"]
+        code, out, err = first
+        if code == 2:
+            return [p for p in [refusal_problem(name, err, None)] if p]
+        if code != 0:
+            return [f"{name}: exit {code}: {err.strip()[:300]}"]
+        why = summary_problem(out)
+        return [f"{name}: exit 0 but stdout is {why}"] if why else []
+    with tempfile.TemporaryDirectory() as folder:
+        summary_file = pathlib.Path(folder) / "summary.json"
+        first = run_once(binary, case, seconds, json_mode=False, summary=str(summary_file))
+        if isinstance(first, str):
+            return [f"{name} (text): {first}"]
+        code, out, err = first
+        written = summary_file.read_text() if summary_file.exists() else None
+    problems = []
+    if code == 2:
+        if written is not None:
+            problems.append(f"{name} (text): exit 2, yet a summary file was written")
+        problems += [p for p in [refusal_problem(f"{name} (text)", err, single)] if p]
+        second = run_once(binary, case, seconds, json_mode=True)
+        if isinstance(second, str):
+            return problems + [f"{name}: {second}"]
+        json_code, _, json_err = second
+        if json_code != 2:
+            problems.append(f"{name}: exit {json_code} under --json, but 2 as text: {json_err.strip()[:300]}")
+        else:
+            problems += [p for p in [refusal_problem(name, json_err, single)] if p]
         return problems
-    second = run_once(binary, case, seconds, json_mode=False)  # the human text
-    if isinstance(second, str):
-        return problems + [f"{name} (text): {second}"]
-    text_code, text_out, text_err = second
-    if text_code != code:
-        problems.append(f"{name} (text): exit {text_code}, but {code} under --json: {text_err.strip()[:300]}")
-    found = NON_FINITE.search(text_out)
+    if code != 0:
+        return [f"{name} (text): exit {code}: {err.strip()[:300]}"]
+    why = summary_problem(written) if written is not None else "missing"
+    if why:
+        problems.append(f"{name} (text): exit 0 but the --summary file is {why}")
+    found = NON_FINITE.search(out)
     if found:
-        line = next(l for l in text_out.splitlines() if found.group(0) in l)
+        line = next(l for l in out.splitlines() if found.group(0) in l)
         problems.append(f"{name} (text): stdout prints {found.group(0)!r}: {line.strip()[:200]!r}")
-    if text_code == 2 and single not in text_err:
-        problems.append(f"{name} (text): exit 2, but the message does not name {single}: {text_err.strip()[:300]}")
     return problems
 
 
@@ -138,7 +169,7 @@ def main(argv):
                 problems.append(problem)
                 print(problem, flush=True)
     singles = sum(1 for _, case in jobs if len(case) == 1)
-    print(f"{len(jobs)} cases of {len(binaries)} chapters ({singles} also as text); {len(problems)} problems")
+    print(f"{len(jobs)} cases of {len(binaries)} chapters ({singles} of one flag, as text); {len(problems)} problems")
     return 1 if problems else 0
 
 

@@ -37,6 +37,7 @@ struct CommonOptions {
   bool show = false;                               ///< --show: open a window if a display exists
   bool json = false;                               ///< --json: one JSON object on stdout
   bool quiet = false;                              ///< --quiet: no text on stdout
+  std::string summary_file;                        ///< --summary: the JSON summary to a file too
   bool fail_on_divergence = false;                 ///< --fail-on-divergence: exit 3 if a run diverged
 };
 
