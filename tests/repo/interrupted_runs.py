@@ -207,6 +207,10 @@ def chapter_cases(binary, work, figures):
 
 
 def main(argv):
+    # Started in the background by a shell without job control, this process would ignore SIGINT,
+    # and so would the chapters it starts (an ignored signal stays ignored across exec; the
+    # chapters then rightly leave it so). A handler of our own is reset to the default in them.
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     bin_dir, work, figures = pathlib.Path(argv[1]), pathlib.Path(argv[2]).resolve(), pathlib.Path(argv[3])
     binaries = chapter_binaries(bin_dir)
     problems = late_helper_races(binaries, work)
