@@ -142,6 +142,10 @@ class Batch:
         wanted = sorted({s + ".o" for e in points["exercises"] for s in e.get("sources", [])})
         if wanted:
             subprocess.run(["ar", "x", str(pathlib.Path(library).resolve()), *wanted], cwd=objects_dir, check=True)
+            missing = [name for name in wanted if not (objects_dir / name).is_file()]
+            if missing:  # `ar x` says so, and exits 0: without them every program of theirs fails to link
+                raise SystemExit(f"grade: the kit's library {library} holds no {', '.join(missing)}, which "
+                                 "points.json's \"sources\" name (common/CMakeLists.txt keeps them out of the unity batches)")
         include = ROOT / "common" / "include"
         for exercise in points["exercises"]:
             stem = stem_of(exercise)
