@@ -3,17 +3,20 @@
 solved copy of exercises/, runs every part whose exercises are written, prints the student's
 results for those, and names each other part with the exercise it waits for.
 
-Three trees are built, chapters only, as `./kit --impl DIR run` builds them (on the kit's library
-built once):
+Three trees:
   - "first": the first exercise of every chapter solved (1.1, 2.1, 3.1, 4.1, 5.1, …), and R(z) (2.4)
     without the symplectic step (2.3) it is drawn beside, and ω from L (8.3) with the step on R
     (8.1) it drives; the rest stubs;
   - "rest": the opposite;
   - "none": exercises/ as shipped, nothing solved.
+The first two are built here, chapters only, as `./kit --impl DIR run` builds them (on the kit's
+library built once). "none" is the student edition's own tree: repo.student-edition builds it
+whole and checks it with --built, so that its chapters are compiled once, not twice.
 Each chapter must exit 0 with figures on, skip only parts whose exercise is not solved, and
 report the numbers of the parts that are (checked against what the lecture predicts).
 
-Usage: partial_runs.py WORK_DIR [LIBKIT_COMMON]
+Usage: partial_runs.py WORK_DIR [LIBKIT_COMMON]          "first" and "rest"
+       partial_runs.py --built none BUILD_DIR WORK_DIR   "none", built in BUILD_DIR already
 """
 import json
 import math
@@ -205,38 +208,52 @@ def expectations(tree):
     }
 
 
-def main(argv):
-    work = pathlib.Path(argv[1]).resolve()
-    library = argv[2] if len(argv) > 2 else ""  # the test build's libkit_common.a, or "" to compile one
-    points = json.loads((ROOT / "tests/grading/points.json").read_text(encoding="utf-8"))["exercises"]
-    every = {e["id"] for e in points}
+def check_tree(tree, solved, build_dir, figures):
+    """The problems of one built tree's chapters, each run with figures into figures/NN."""
     problems = []
-    for tree, solved in [("first", FIRST), ("rest", every - FIRST), ("none", set())]:
-        source, build_dir = work / tree, work / f"{tree}-build"
-        write_tree(source, solved)
-        build(source, build_dir, library)
-        for chapter in CHAPTERS:
+    for chapter in CHAPTERS:
+        try:
+            summary = run(build_dir, chapter, figures / chapter)
+        except (AssertionError, ValueError, subprocess.TimeoutExpired) as error:
+            problems.append(f"{tree}: {error}")
+            continue
+        wrongly = waits_for(summary) & solved
+        if wrongly:
+            problems.append(f"{tree}: {chapter} skips parts waiting for exercises that are solved: {wrongly}")
+        if not summary.get("skipped"):
+            problems.append(f"{tree}: {chapter} names no part that waits (half the exercises are stubs)")
+        if not list((figures / chapter).glob("*.png")) and not summary.get("figures_waiting"):
+            problems.append(f"{tree}: {chapter} drew no figure, and names none that waits")
+        for what, check in expectations(tree)[chapter]:
             try:
-                summary = run(build_dir, chapter, work / f"{tree}-figures" / chapter)
-            except (AssertionError, ValueError, subprocess.TimeoutExpired) as error:
-                problems.append(f"{tree}: {error}")
-                continue
-            wrongly = waits_for(summary) & solved
-            if wrongly:
-                problems.append(f"{tree}: {chapter} skips parts waiting for exercises that are solved: {wrongly}")
-            if not summary.get("skipped"):
-                problems.append(f"{tree}: {chapter} names no part that waits (half the exercises are stubs)")
-            if not list((work / f"{tree}-figures" / chapter).glob("*.png")) and not summary.get("figures_waiting"):
-                problems.append(f"{tree}: {chapter} drew no figure, and names none that waits")
-            for what, check in expectations(tree)[chapter]:
-                try:
-                    ok = check(summary)
-                except (KeyError, TypeError) as error:
-                    ok, what = False, f"{what} ({type(error).__name__}: {error})"
-                print(f"{tree}: {chapter}: {'ok' if ok else 'MISSING'}: {what}")
-                if not ok:
-                    problems.append(f"{tree}: {chapter}: {what}")
-            print(f"{tree}: {chapter}: waits for {sorted(waits_for(summary))}")
+                ok = check(summary)
+            except (KeyError, TypeError) as error:
+                ok, what = False, f"{what} ({type(error).__name__}: {error})"
+            print(f"{tree}: {chapter}: {'ok' if ok else 'MISSING'}: {what}")
+            if not ok:
+                problems.append(f"{tree}: {chapter}: {what}")
+        print(f"{tree}: {chapter}: waits for {sorted(waits_for(summary))}")
+    return problems
+
+
+def main(argv):
+    problems = []
+    if len(argv) > 1 and argv[1] == "--built":
+        if len(argv) != 5 or argv[2] != "none":
+            sys.exit("usage: partial_runs.py --built none BUILD_DIR WORK_DIR")
+        build_dir, work = pathlib.Path(argv[3]).resolve(), pathlib.Path(argv[4]).resolve()
+        shutil.rmtree(work, ignore_errors=True)
+        problems += check_tree("none", set(), build_dir, work / "none-figures")
+    else:
+        work = pathlib.Path(argv[1]).resolve()
+        library = argv[2] if len(argv) > 2 else ""  # the test build's libkit_common.a, or "" to compile one
+        points = json.loads((ROOT / "tests/grading/points.json").read_text(encoding="utf-8"))["exercises"]
+        every = {e["id"] for e in points}
+        for tree, solved in [("first", FIRST), ("rest", every - FIRST)]:
+            source, build_dir = work / tree, work / f"{tree}-build"
+            write_tree(source, solved)
+            build(source, build_dir, library)
+            problems += check_tree(tree, solved, build_dir, work / f"{tree}-figures")
     for problem in problems:
         print("FAILED:", problem)
     return 1 if problems else 0
