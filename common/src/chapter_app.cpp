@@ -40,6 +40,12 @@ class ClearingBuffer : public std::streambuf {
 };
 }  // namespace
 
+// A refusal naming `flag` and its `value` unless this process may create files in `folder`.
+void require_writable(const std::string& flag, const std::string& value, const std::filesystem::path& folder) {
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw UsageError(fmt::format("{} '{}': {} is not writable", flag, value, folder.string()));
+}
+
 void check_output_folder(const std::string& dir) {
   namespace fs = std::filesystem;
   if (dir.empty()) throw UsageError("--out '': expected a folder name (or --no-plot to write no figure)");
@@ -51,8 +57,7 @@ void check_output_folder(const std::string& dir) {
     existing = existing.parent_path();
   if (!fs::is_directory(existing, error))
     throw UsageError(fmt::format("--out '{}': {} is a file, not a folder", dir, existing.string()));
-  if (::access(existing.c_str(), W_OK | X_OK) != 0)
-    throw UsageError(fmt::format("--out '{}': {} is not writable", dir, existing.string()));
+  require_writable("--out", dir, existing);
 }
 
 // --summary FILE: the file itself is written at the end, through a temporary; here its folder
@@ -68,8 +73,7 @@ void check_summary_file(const std::string& file) {
   const fs::path folder = path.parent_path();
   if (!fs::is_directory(folder, error))
     throw UsageError(fmt::format("--summary '{}': the folder {} does not exist", file, folder.string()));
-  if (::access(folder.c_str(), W_OK | X_OK) != 0)
-    throw UsageError(fmt::format("--summary '{}': {} is not writable", file, folder.string()));
+  require_writable("--summary", file, folder);
 }
 
 ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::string description)

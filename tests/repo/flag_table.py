@@ -95,12 +95,13 @@ def summary_problem(text):
     return "the summary holds NaN or Infinity" if "NaN" in dumped or "Infinity" in dumped else None
 
 
-def refusal_problem(name, err, single):
+def refusal_problems(name, err, single):
+    """What is wrong with a refusal's message: none, or that it is empty or does not name `single`."""
     if not err.strip():
-        return f"{name}: exit 2 without a message"
+        return [f"{name}: exit 2 without a message"]
     if single and single not in err:
-        return f"{name}: exit 2, but the message does not name {single}: {err.strip()[:300]}"
-    return None
+        return [f"{name}: exit 2, but the message does not name {single}: {err.strip()[:300]}"]
+    return []
 
 
 def run(binary, case, seconds):
@@ -115,7 +116,7 @@ def run(binary, case, seconds):
             return [f"{name}: {first}"]
         code, out, err = first
         if code == 2:
-            return [p for p in [refusal_problem(name, err, None)] if p]
+            return refusal_problems(name, err, None)
         if code != 0:
             return [f"{name}: exit {code}: {err.strip()[:300]}"]
         why = summary_problem(out)
@@ -131,7 +132,7 @@ def run(binary, case, seconds):
     if code == 2:
         if written is not None:
             problems.append(f"{name} (text): exit 2, yet a summary file was written")
-        problems += [p for p in [refusal_problem(f"{name} (text)", err, single)] if p]
+        problems += refusal_problems(f"{name} (text)", err, single)
         second = run_once(binary, case, seconds, json_mode=True)
         if isinstance(second, str):
             return problems + [f"{name}: {second}"]
@@ -139,7 +140,7 @@ def run(binary, case, seconds):
         if json_code != 2:
             problems.append(f"{name}: exit {json_code} under --json, but 2 as text: {json_err.strip()[:300]}")
         else:
-            problems += [p for p in [refusal_problem(name, json_err, single)] if p]
+            problems += refusal_problems(name, json_err, single)
         return problems
     if code != 0:
         return [f"{name} (text): exit {code}: {err.strip()[:300]}"]

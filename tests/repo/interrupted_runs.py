@@ -65,13 +65,19 @@ def kill_group(pgid):
         pass  # it ended meanwhile
 
 
+def stat_fields(pid):
+    """The fields of /proc/PID/stat after the command name (state first, process group third),
+    or None once the process is gone."""
+    try:
+        return pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except (FileNotFoundError, ProcessLookupError, IndexError):
+        return None
+
+
 def state(pid):
     """The process's state letter (R, S, T, Z, ...), or None once it is gone."""
-    try:
-        text = pathlib.Path(f"/proc/{pid}/stat").read_text()
-    except (FileNotFoundError, ProcessLookupError):
-        return None
-    return text.rsplit(")", 1)[1].split()[0]
+    fields = stat_fields(pid)
+    return fields[0] if fields else None
 
 
 def group_members(pgid):
@@ -79,14 +85,12 @@ def group_members(pgid):
     zombie has: it waits only for whoever adopted it to collect its status)."""
     members = []
     for entry in pathlib.Path("/proc").iterdir():
-        if not entry.name.isdigit():
+        fields = stat_fields(entry.name) if entry.name.isdigit() else None
+        if not fields or int(fields[2]) != pgid or fields[0] == "Z":
             continue
         try:
-            fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
-            if int(fields[2]) != pgid or fields[0] == "Z":
-                continue
             command = (entry / "cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace").strip()
-        except (FileNotFoundError, ProcessLookupError, IndexError, ValueError):
+        except (FileNotFoundError, ProcessLookupError):
             continue
         members.append((int(entry.name), fields[0], command))
     return members
