@@ -2,11 +2,15 @@
 # The student edition holds no solution, builds, passes the tests that apply, and self-grades.
 set -euo pipefail
 kit_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-work=${1:?usage: [KIT_TEST_COMMON_LIBRARY=libkit_common.a] student_edition.sh WORK_DIR}
+work=${1:?usage: [KIT_TEST_COMMON_LIBRARY=libkit_common.a KIT_TEST_PROGRAMS=BUILD/tests] student_edition.sh WORK_DIR}
 # The edition's common/ is the kit's own, file for file: its tree may link the kit's library
 # rather than compile it again (the edition without production code, whose common/ differs,
-# always compiles its own).
+# always compiles its own). When everything but exercises/ is the kit's own too, it also takes
+# the programs no exercise goes into (judges, test_common) from the kit's build, once ninja's record
+# of what each of their compiles read shows no file of solutions/: the edition's own compiles are
+# its chapters, the ones a student's work changes.
 library=${KIT_TEST_COMMON_LIBRARY:-}
+programs=${KIT_TEST_PROGRAMS:-}
 rm -rf "$work"
 mkdir -p "$work"
 cd "$kit_root"
@@ -20,7 +24,21 @@ grep -q "solves some exercises another way" "$work/edition/README.md" || { echo 
 
 cd "$work/edition"
 if [ -n "$library" ] && diff -rq "$kit_root/common" common >/dev/null; then
-  cmake --preset release -B build "-DKIT_COMMON_LIBRARY=$library" >/dev/null
+  shared=("-DKIT_COMMON_LIBRARY=$library")
+  if [ -n "$programs" ] && diff -q "$kit_root/CMakeLists.txt" CMakeLists.txt >/dev/null &&
+     diff -rq -x __pycache__ "$kit_root/cmake" cmake >/dev/null && diff -rq -x __pycache__ "$kit_root/tests" tests >/dev/null &&
+     diff -rq -x __pycache__ "$kit_root/chapters" chapters >/dev/null; then
+    read_solutions=$(ninja -C "$(dirname "$programs")" -t deps | awk '/^[^ ]/ { object = $1 } /^ / { print object, $1 }' |
+      grep -E "^tests/CMakeFiles/(test_common|grade_ex[0-9_]+|kit_remote_student|replay_[a-z]+_scene|kit_test_pch|kit_catch_main|kit_remote_judge)[.]dir/" |
+      grep -E "/(solutions|exercises)/" || true)
+    if [ -z "$read_solutions" ]; then
+      shared+=("-DKIT_TEST_PROGRAMS=$programs")
+    else
+      printf 'the kit'"'"'s test programs read solutions/ or exercises/, so the edition compiles its own:\n%s\n' "$read_solutions" | head -5
+    fi
+  fi
+  echo "the edition's tree takes from the kit's build: ${shared[*]}"
+  cmake --preset release -B build "${shared[@]}" >/dev/null
 fi
 # Instructor-only commands refuse with a reason.
 if ./kit exercises-check 2>/dev/null; then echo "FAILED: exercises-check ran without solutions/"; exit 1; fi
@@ -50,6 +68,19 @@ for file in common/include/kit/dopri5.hpp common/include/kit/pi_step_control.hpp
 done
 grep -q "runs on your own ex 4.2 and ex 4.3" "$work/bare/README.md" || { echo "FAILED: its README does not say so"; exit 1; }
 cd "$work/bare"
+# Its common/ is the kit's less the production headers. When no preprocessor line left in it names
+# one of them (an #include, a __has_include, a #define), no source of the library can include one,
+# and its library is the kit's: the tree links that.
+if [ -n "$library" ]; then
+  differences=$(diff -rq "$kit_root/common" common || true)
+  removed=$(sed -n "s|^Only in $kit_root/common[^:]*: ||p" <<<"$differences")
+  others=$(grep -v "^Only in $kit_root/common" <<<"$differences" || true)
+  named=$(printf '%s\n' $removed | sed 's/[.]/[.]/g' | paste -sd'|')
+  if [ -n "$removed" ] && [ -z "$others" ] && ! grep -rqE "^[[:space:]]*#.*($named)" common; then
+    echo "the edition without production code links the kit's library: it leaves out only" $removed
+    cmake --preset release -B build "-DKIT_COMMON_LIBRARY=$library" >/dev/null
+  fi
+fi
 ./kit --impl "$work/mine" run 04-adaptive-rk -- --no-plot --quiet >/dev/null
 bare_build=$(./kit --impl "$work/mine" build-dir)
 "$bare_build/bin/04-adaptive-rk" --no-plot --json >"$work/bare-04.json"
