@@ -16,6 +16,7 @@
 
 namespace {
 using kit::ChapterApp, kit::ClothScene, kit::ClothKernels, kit::ImplicitKernels, kit::ImplicitSettings;
+using Sizes = kit::ImplicitExperimentSizes;  // of the fixed experiments: the lecture's, or --quick's
 
 // 1. "Linéarisation: f(x_n + Δx, v_n + Δv) = f_n + ∂f/∂x Δx + ∂f/∂v Δv": ex 7.1's block against
 //    central differences of the spring force, and what the clamp does to a compressed spring.
@@ -52,8 +53,8 @@ void linear_system(ChapterApp& app, const ClothScene& scene, const kit::Springs&
 // 3. "⇒ grands pas de temps": K from 1e1 to 1e7 N/m, symplectic Euler's largest stable step
 //    against the implicit methods at 1/30 s; "linéarisation": one step's error against Newton.
 void large_steps(ChapterApp& app, const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                 const ImplicitSettings& settings) {
-  const auto rows = kit::stiffness_sweep(scene, kernels, implicit, settings);  // K = 1e1 … 1e7 N/m
+                 const ImplicitSettings& settings, const Sizes& sizes) {
+  const auto rows = kit::stiffness_sweep(scene, kernels, implicit, settings, sizes.sweep_k);
   app.report().print("3. The sheet at 8 nodes across, held at two corners, 1 s under gravity, undamped:\n");
   kit::print_stiffness_table(app.report(), rows, 1.0 / 30);
   app.figure(kit::cloth_stiffness_figure(rows, 1.0 / 30, scene.name));
@@ -69,8 +70,8 @@ void large_steps(ChapterApp& app, const ClothScene& scene, ClothKernels kernels,
 // 4. What a large step costs in accuracy: the energy implicit methods remove, and the error
 //    against wall time of every method over its range of steps (and of Liu's iterations).
 void cost_of_accuracy(ChapterApp& app, const ClothScene& scene, ClothKernels kernels,
-                      ImplicitKernels implicit, const ImplicitSettings& settings) {
-  const kit::Trade trade = kit::speed_accuracy_trade(scene, kernels, implicit, settings);
+                      ImplicitKernels implicit, const ImplicitSettings& settings, const Sizes& sizes) {
+  const auto trade = kit::speed_accuracy_trade(scene, kernels, implicit, settings, 10, 1e4, sizes.trade_t);
   app.report().say("trade_reference", "4. The sheet at {n} nodes across, K = {k:.3g} N/m, {t:.3g} s; the "
                    "reference is RK4 at Δt = {dt:.3g} s (its energy drifts {drift:.1e} J); symplectic "
                    "Euler's limit is {dt_max:.3g} s:\n", {{"n", long(trade.n)}, {"k", trade.stiffness},
@@ -83,9 +84,8 @@ void cost_of_accuracy(ChapterApp& app, const ClothScene& scene, ClothKernels ker
 
 // 5. The linear solver: CG iterations per solve against h and K: Eigen CG, filtered PCG, multigrid PCG.
 void solver_cost(ChapterApp& app, const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                 const ImplicitSettings& settings) {
-  const auto points = kit::solver_behaviour(scene, kernels, implicit, settings, {1e2, 1e4, 1e6},
-                                            {1.0 / 30, 1.0 / 60, 1.0 / 120, 1.0 / 240, 1.0 / 480});
+                 const ImplicitSettings& settings, const Sizes& sizes) {
+  const auto points = kit::solver_behaviour(scene, kernels, implicit, settings, sizes.cg_k, sizes.cg_h);
   app.report().print(fmt::format("\n5. Conjugate gradients to {:.0e}; the sheet, 12 nodes across, 0.25 s:\n",
                                  settings.cg_tolerance));
   kit::print_solver_table(app.report(), points);
@@ -114,12 +114,10 @@ void scene_run(ChapterApp& app, const ClothScene& scene, const kit::Springs& spr
 }  // namespace
 
 int main(int argc, char** argv) {
-  kit::ClothFlags flags;
-  flags.scene = "drape";
+  kit::ClothFlags flags;  // the scene "drape" unless --scene says otherwise (add_implicit_cloth_flags)
   kit::ImplicitFlags implicit_flags;
   ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR, "Chapter 7: cloth, implicit integration");
-  kit::add_implicit_cloth_flags(app, flags, implicit_flags);
-  app.add_divergence_flag();
+  kit::add_implicit_cloth_flags(app, flags, implicit_flags);  // --fail-on-divergence and --quick too
   return app.run(argc, argv, [&] {
     const auto scenes = std::filesystem::path(KIT_CHAPTER_SOURCE_DIR) / ".." / "06-cloth-explicit" / "scenes";
     const auto scene = kit::apply_implicit_cloth_flags(kit::load_cloth_scene_flag(flags, scenes), flags);
@@ -130,6 +128,7 @@ int main(int argc, char** argv) {
     app.summary()["scene"] = kit::cloth_scene_summary(scene);
     const ClothKernels kernels = kit::student_cloth_kernels();
     const ImplicitSettings& settings = run.implicit_settings;  // the flags' solver, for every section
+    const Sizes sizes = Sizes::for_run(app.options().quick);
     app.section("linearisation", [&] { linearisation(app, implicit); });
     const auto springs = app.section("the springs", [&] { return kernels.build_springs(scene.grid,
                                                                                         scene.springs); });
@@ -137,11 +136,12 @@ int main(int argc, char** argv) {
       if (!springs) throw kit::NotImplemented("ex 6.2", "cloth_springs.hpp");
       linear_system(app, scene, *springs, implicit, run.dt);
     });
-    app.section("large steps", {"stiffness"}, [&] { large_steps(app, scene, kernels, implicit, settings); });
+    app.section("large steps", {"stiffness"},
+                [&] { large_steps(app, scene, kernels, implicit, settings, sizes); });
     app.section("the cost of accuracy", {"damping", "trade-timing"},
-                [&] { cost_of_accuracy(app, scene, kernels, implicit, settings); });
+                [&] { cost_of_accuracy(app, scene, kernels, implicit, settings, sizes); });
     app.section("the linear solver", {"solver"},
-                [&] { solver_cost(app, scene, kernels, implicit, settings); });
+                [&] { solver_cost(app, scene, kernels, implicit, settings, sizes); });
     app.section("the scene", [&] {
       if (!springs) throw kit::NotImplemented("ex 6.2", "cloth_springs.hpp");
       scene_run(app, scene, *springs, kernels, run, kit::cloth_output_options(flags, app.options(), run));

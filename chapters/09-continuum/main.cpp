@@ -86,7 +86,7 @@ void mesh_dependence(ChapterApp& app, const ContinuumSetup& s, const ContinuumKe
 }
 
 // 5. What accuracy costs: the cantilever's tip error against wall time, springs and linear FEM
-//    by Newton, St Venant–Kirchhoff by Newton and by explicit and implicit relaxation.
+//    by Newton, St Venant–Kirchhoff by Newton and by explicit and implicit relaxation (--quick: to 4 high).
 void cost_of_accuracy(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
   app.report().print("\n5. The cantilever's tip against wall time:\n");
   const std::vector<std::pair<FemModel, TipSolver>> methods{
@@ -97,7 +97,7 @@ void cost_of_accuracy(ChapterApp& app, const ContinuumSetup& s, const ContinuumK
   for (const auto& method : methods)  // not a structured binding: a lambda may not capture one before C++23
     app.report().attempt(fmt::format("{}, {}", kit::model_name(method.first), kit::solver_name(method.second)), [&] {
       std::vector<kit::TipRun> list;
-      for (const int ny : {1, 2, 4, 8})
+      for (const int ny : app.options().quick ? std::vector{1, 2, 4} : std::vector{1, 2, 4, 8})
         list.push_back(kit::run_cantilever(s.material, method.first, method.second, ny, kernels));
       series.push_back(list);
     });
@@ -127,6 +127,7 @@ int main(int argc, char** argv) {
   ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR, "Chapter 9: continuum mechanics");
   kit::add_continuum_flags(app, flags);
   app.add_divergence_flag();
+  app.add_quick_flag("the cost of accuracy's cantilevers to 4 elements high, not 8");
   return app.run(argc, argv, [&] {
     const ContinuumSetup setup = kit::continuum_setup(flags);
     kit::announce_run(app.report(), "runs", "Chapter 9", kit::estimate_continuum_runs(setup),

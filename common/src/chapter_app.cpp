@@ -178,6 +178,13 @@ void ChapterApp::add_divergence_flag() {
                 "exit with code 3 when a simulation diverged (it is reported either way)");
 }
 
+void ChapterApp::add_quick_flag(const std::string& sizes) {
+  app_.add_flag("--quick", options_.quick,
+                fmt::format("the lecture's experiments at reduced sizes ({}): a first look in a fraction of the "
+                            "time; the README's numbers are those of the full run", sizes));
+  record_parameters_.push_back([this] { summary_["parameters"]["quick"] = options_.quick; });
+}
+
 void ChapterApp::diverged(const std::string& run, const std::string& what) {
   summary_["divergences"].push_back({{"run", run}, {"what", what}});
 }

@@ -19,7 +19,10 @@ std::optional<ImplicitMethod> implicit_named(const std::string& name) {
 void add_implicit_cloth_flags(ChapterApp& app, ClothFlags& cloth, ImplicitFlags& f) {
   std::vector<std::string> implicit;
   for (const ImplicitMethod m : all_implicit_methods) implicit.emplace_back(flag_name(m));
+  cloth.scene = "drape";  // chapter 7's default scene, before --scene records its default
   add_cloth_flags(app, cloth, implicit);
+  app.add_divergence_flag();
+  app.add_quick_flag("three stiffnesses in the sweep, a trade over 1/3 s, three steps per solver curve");
   app.cli()
       .add_option("--solver", f.solver,
                   "linear solver: cg (Eigen, diagonal preconditioner), pcg (ex 7.3, filtered) or mg (filtered, "

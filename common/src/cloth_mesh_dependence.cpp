@@ -2,6 +2,7 @@
 #include <kit/cloth_mesh_dependence.hpp>
 
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -62,19 +63,23 @@ Sag hanging_sag(int n, Hanging hanging, ClothKernels kernels, long max_steps) {
   return sag;
 }
 
-MeshDependence measure_mesh_dependence(ClothKernels kernels) {
+MeshDependence measure_mesh_dependence(ClothKernels kernels, int finest_n) {
+  if (finest_n < 32) throw std::invalid_argument("measure_mesh_dependence: Richardson needs N = 8, 16 and 32 at least");
   MeshDependence m;
   for (Hanging hanging : all_hangings)
-    for (int n : {8, 16, 32, 64}) m.sags[hanging].push_back(hanging_sag(n, hanging, kernels));
+    for (int n = 8; n <= finest_n; n *= 2) m.sags[hanging].push_back(hanging_sag(n, hanging, kernels));
   const auto& edge = m.sags[Hanging::top_edge];
-  m.top_edge = richardson(edge[1].drop, edge[2].drop, edge[3].drop);
+  const std::size_t last = edge.size() - 1;
+  m.finest = {edge[last - 2].n, edge[last - 1].n, edge[last].n};
+  m.top_edge = richardson(edge[last - 2].drop, edge[last - 1].drop, edge[last].drop);
   return m;
 }
 
-std::string describe(const Convergence& c, double unit, const std::string& unit_name) {
-  if (!c.converges) return "does not converge over N = 16, 32, 64 (the differences do not shrink)";
-  return fmt::format("converges at order {:.2f} to {:.4g} {}, {:.2g}% away at N = 64", c.order, unit * c.limit,
-                     unit_name, 100 * c.remaining);
+std::string describe(const Convergence& c, const std::array<int, 3>& n, double unit, const std::string& unit_name) {
+  if (!c.converges)
+    return fmt::format("does not converge over N = {}, {}, {} (the differences do not shrink)", n[0], n[1], n[2]);
+  return fmt::format("converges at order {:.2f} to {:.4g} {}, {:.2g}% away at N = {}", c.order, unit * c.limit,
+                     unit_name, 100 * c.remaining, n[2]);
 }
 
 }  // namespace kit

@@ -238,6 +238,7 @@ TEST_CASE("cloth: just below Δt_max the flag hangs; just above it, it explodes"
 TEST_CASE("chapter 6: the printed numbers are the ones measured: Δt_max, the 1/N law, strain, the mesh") {
   kit::test::TempDir out("ch06");
   const json j = run_chapter({"--no-plot"}, out.path());
+  CHECK(j["parameters"]["quick"] == false);
   const json& spring = j["spring"];
   CHECK(spring["third"].get<double>() < 1e-12);
   CHECK(spring["gradient"].get<double>() < 1e-6);
@@ -332,4 +333,22 @@ TEST_CASE("chapter 6: a resolution too large for the machine is refused up front
   CHECK_THAT(result.err, ContainsSubstring("--resolution 100000") && ContainsSubstring("takes about") &&
                              ContainsSubstring(" TB") && ContainsSubstring("less memory"));
   CHECK_FALSE(fs::exists(out.path() / "f"));
+}
+
+TEST_CASE("chapter 6: --quick runs every section, its table at 8 nodes across and its sweeps to N = 32") {
+  kit::test::TempDir out("ch06-quick");
+  const json quick = run_chapter({"--no-plot", "--quick"}, out.path());
+  CHECK(quick["parameters"]["quick"] == true);
+  CHECK_FALSE(quick.contains("skipped"));
+  // The whole stability table, on the 8-node sheet: its highest frequency is lower than at 16.
+  REQUIRE(quick["stability"].size() == 10);
+  CHECK(quick["stability"][0]["omega_max"].get<double>() < 500);  // 775 rad/s at 16 nodes
+  std::vector<int> resolutions, meshes;
+  for (const json& row : quick["resolution"]) resolutions.push_back(row["n"]);
+  for (const json& row : quick["mesh"]) meshes.push_back(row["n"]);
+  CHECK(resolutions == std::vector{16, 32});
+  CHECK(*std::max_element(meshes.begin(), meshes.end()) == 32);
+  CHECK(quick["mesh_limit"]["verdict"].get<std::string>().find("at N = 32") != std::string::npos);
+  CHECK(quick["integrators"].size() == 4);  // the scene's own runs are the full ones
+  CHECK(quick["strain"]["free"].get<double>() > quick["strain"]["max"].get<double>());
 }

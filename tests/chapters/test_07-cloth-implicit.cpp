@@ -7,6 +7,7 @@
 // grows only at extreme stiffness), the chapter prints what was measured, and bad input exits 2.
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -486,4 +487,27 @@ TEST_CASE("chapter 7: bad flags are usage errors that name the flag") {
       {{"--dt", "0"}, "--dt"},
       {{"--scene", "tablecloth"}, "drape"},
   });
+}
+
+TEST_CASE("chapter 7: --quick runs every section on fewer stiffnesses and steps, and a trade over 1/3 s") {
+  kit::test::TempDir out("ch07-quick");
+  const json quick = run_chapter({"--no-plot", "--quick"}, out.path());
+  CHECK(quick["parameters"]["quick"] == true);
+  CHECK_FALSE(quick.contains("skipped"));
+  std::set<double> sweep_k, cg_k, cg_h;
+  for (const json& row : quick["stiffness"]) sweep_k.insert(row["stiffness"].get<double>());
+  for (const json& row : quick["solver"]) cg_k.insert(row["stiffness"].get<double>()), cg_h.insert(row["h"].get<double>());
+  CHECK(sweep_k == std::set<double>{1e2, 1e4, 1e6});
+  CHECK(quick["stiffness"].size() == 9);  // each K with linearised implicit Euler, Newton and Liu
+  CHECK(cg_k == std::set<double>{1e2, 1e4, 1e6});
+  CHECK(cg_h == std::set<double>{1.0 / 30, 1.0 / 120, 1.0 / 480});
+  CHECK(quick["solver"].size() == 27);  // three solvers
+  CHECK(quick["trade_reference"]["t"].get<double>() == Approx(1.0 / 3).epsilon(1e-12));
+  // Every method of the trade still runs; the errors still fall as the step does.
+  std::map<std::string, std::vector<double>> errors;
+  for (const json& run : quick["trade"]) errors[run["method"]].push_back(run["error"].get<double>());
+  for (const char* key : {"symplectic-euler", "rk4", "implicit-euler", "newton", "liu", "liu-iterations"})
+    CHECK(errors.count(key) == 1);
+  for (const char* key : {"symplectic-euler", "implicit-euler"})
+    for (std::size_t k = 1; k < errors[key].size(); ++k) CHECK(errors[key][k] < errors[key][k - 1]);
 }

@@ -297,3 +297,18 @@ TEST_CASE("chapter 9 answers bad input with exit 2, a message naming the flag, a
                                           {{"--frames", "-1"}, "--frames"},
                                           {{"--young", "1e12", "--t-end", "100"}, "over the limit"}});
 }
+
+TEST_CASE("chapter 9: --quick runs every section, the cost of accuracy's cantilevers to 4 elements high") {
+  const json quick = run_chapter({"--quick"});
+  CHECK(quick["parameters"]["quick"] == true);
+  CHECK_FALSE(quick.contains("skipped"));
+  std::map<std::string, std::vector<long>> elements;
+  for (const auto& r : quick["trade"])
+    elements[std::string(r["model"]) + "/" + std::string(r["solver"])].push_back(r["elements"].get<long>());
+  CHECK(elements.size() == 5);  // every model and solver
+  for (const auto& [method, sizes] : elements) {
+    INFO(method);
+    CHECK(sizes == std::vector<long>{20, 80, 320});  // 1, 2 and 4 elements high: 20 ny² of them
+  }
+  CHECK(default_run()["parameters"]["quick"] == false);
+}

@@ -16,6 +16,10 @@ refusal costs nothing): the same exit code, and a message naming the flag. A val
 its one run already gives its text and its summary, and the runs of several flags (the lower
 ends, the upper ends, the pairs) are made under --json.
 
+A chapter with --quick (its fixed experiments at reduced sizes: chapters 6, 7 and 9) gets it in
+every case but the two of all its flags at once: each flag still reaches every section, on the
+same code, in a fraction of the time; the lower and upper ends together run the full sizes.
+
 Usage: flag_table.py BIN_DIR [--seconds S]
 """
 import concurrent.futures
@@ -63,19 +67,22 @@ def singles(flag):
 
 
 def cases_for(table):
-    cases = [c for flag in table for c in singles(flag)]
+    """Every case, each as (flags, at_full_size): the lower and upper ends of all flags at once run
+    the chapter's experiments at full size, the others may be --quick."""
+    cases = [(c, False) for flag in table for c in singles(flag)]
     lows = [(f["flag"], ends(f)[0]) for f in table if ends(f)]
     highs = [(f["flag"], ends(f)[-1]) for f in table if ends(f)]
-    cases += [lows, highs]
+    cases += [(lows, True), (highs, True)]
     pairs = [[(a["flag"], x), (b["flag"], y)] for a, b in itertools.combinations(table, 2)
              for x in ends(a) for y in ends(b)]
-    cases += random.Random(20261122).sample(pairs, min(len(pairs), 8))  # each a whole run at two extremes
+    cases += [(pair, False) for pair in random.Random(20261122).sample(pairs, min(len(pairs), 8))]  # two extremes
     return cases
 
 
-def run_once(binary, case, seconds, json_mode, summary=None):
+def run_once(binary, case, seconds, json_mode, summary=None, quick=False):
     """(exit code, stdout, stderr), or a problem (a string) when it did not end in time."""
     args = [str(binary), "--no-plot"] + (["--json"] if json_mode else []) + (["--summary", summary] if summary else [])
+    args += ["--quick"] if quick else []
     for flag, value in case:
         args += [flag, value]
     try:
@@ -104,14 +111,14 @@ def refusal_problems(name, err, single):
     return []
 
 
-def run(binary, case, seconds):
+def run(binary, case, seconds, quick):
     """The problems of one case: a single flag's text run (and, refused, its --json run), or a
-    run of several flags under --json."""
-    words = " ".join(f"{f} {v!r}" for f, v in case)
+    run of several flags under --json. `quick`: the chapter's --quick is added."""
+    words = " ".join(f"{f} {v!r}" for f, v in case) + (" --quick" if quick else "")
     name = f"{binary.name} {words}"
     single = case[0][0] if len(case) == 1 else None
     if not single:
-        first = run_once(binary, case, seconds, json_mode=True)
+        first = run_once(binary, case, seconds, json_mode=True, quick=quick)
         if isinstance(first, str):
             return [f"{name}: {first}"]
         code, out, err = first
@@ -123,7 +130,7 @@ def run(binary, case, seconds):
         return [f"{name}: exit 0 but stdout is {why}"] if why else []
     with tempfile.TemporaryDirectory() as folder:
         summary_file = pathlib.Path(folder) / "summary.json"
-        first = run_once(binary, case, seconds, json_mode=False, summary=str(summary_file))
+        first = run_once(binary, case, seconds, json_mode=False, summary=str(summary_file), quick=quick)
         if isinstance(first, str):
             return [f"{name} (text): {first}"]
         code, out, err = first
@@ -133,7 +140,7 @@ def run(binary, case, seconds):
         if written is not None:
             problems.append(f"{name} (text): exit 2, yet a summary file was written")
         problems += refusal_problems(f"{name} (text)", err, single)
-        second = run_once(binary, case, seconds, json_mode=True)
+        second = run_once(binary, case, seconds, json_mode=True, quick=quick)
         if isinstance(second, str):
             return problems + [f"{name}: {second}"]
         json_code, _, json_err = second
@@ -162,15 +169,19 @@ def main(argv):
     for binary in binaries:
         table = json.loads(subprocess.run([str(binary), "--flag-table"], capture_output=True, text=True,
                                           check=True).stdout)
-        jobs += [(binary, case) for case in cases_for(table)]
+        has_quick = "--quick" in subprocess.run([str(binary), "--help"], capture_output=True, text=True,
+                                                check=True).stdout
+        jobs += [(binary, case, has_quick and not full_size) for case, full_size in cases_for(table)]
     problems = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        for found in pool.map(lambda job: run(job[0], job[1], seconds), jobs):
+        for found in pool.map(lambda job: run(job[0], job[1], seconds, job[2]), jobs):
             for problem in found:
                 problems.append(problem)
                 print(problem, flush=True)
-    singles = sum(1 for _, case in jobs if len(case) == 1)
-    print(f"{len(jobs)} cases of {len(binaries)} chapters ({singles} of one flag, as text); {len(problems)} problems")
+    singles = sum(1 for _, case, _ in jobs if len(case) == 1)
+    quick = sum(1 for _, _, quick in jobs if quick)
+    print(f"{len(jobs)} cases of {len(binaries)} chapters ({singles} of one flag, as text; {quick} with --quick); "
+          f"{len(problems)} problems")
     return 1 if problems else 0
 
 

@@ -39,6 +39,7 @@ struct CommonOptions {
   bool quiet = false;                              ///< --quiet: no text on stdout
   std::string summary_file;                        ///< --summary: the JSON summary to a file too
   bool fail_on_divergence = false;                 ///< --fail-on-divergence: exit 3 if a run diverged
+  bool quick = false;                              ///< --quick: the lecture's experiments at reduced sizes
 };
 
 /// One chapter binary: its flags, its text and JSON report, and its figures.
@@ -96,6 +97,11 @@ class ChapterApp {
 
   /// Adds --fail-on-divergence, for chapters whose runs can blow up.
   void add_divergence_flag();
+  /// Adds --quick, for chapters whose fixed experiments take seconds: `sizes` says what it shrinks
+  /// ("the resolution sweeps stop at N = 32", say). Every section still runs, on the scene and
+  /// flags given, so a quick run shows the same behaviour in a fraction of the time; the summary
+  /// records "quick": true, and the figures hold fewer points.
+  void add_quick_flag(const std::string& sizes);
   /// Records that a run diverged: a result, listed under "divergences" in the summary. The
   /// chapter still finishes and exits 0, or 3 under --fail-on-divergence.
   void diverged(const std::string& run, const std::string& what);

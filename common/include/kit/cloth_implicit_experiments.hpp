@@ -64,6 +64,20 @@ struct StiffnessRow {
   MeasuredDtMax measured;      ///< symplectic Euler
   std::vector<ImplicitStability> implicit;
 };
+/// The sizes of chapter 7's fixed experiments: the lecture's, or --quick's (three stiffnesses in
+/// the sweep, a trade over 1/3 s, three steps per solver curve: under half of the work). Every
+/// step of the trade divides its duration: 1/3 s is 10 steps of 1/30 s, 320 of 1/960 s.
+struct ImplicitExperimentSizes {
+  std::vector<double> sweep_k{1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7};                 ///< the sweep's K [N/m]
+  double trade_t = 1;                                                          ///< the trade's duration [s]
+  std::vector<double> cg_k{1e2, 1e4, 1e6};                                     ///< the CG curves' K [N/m]
+  std::vector<double> cg_h{1.0 / 30, 1.0 / 60, 1.0 / 120, 1.0 / 240, 1.0 / 480};  ///< and their h [s]
+  static ImplicitExperimentSizes for_run(bool quick) {
+    if (!quick) return {};
+    return {{1e2, 1e4, 1e6}, 1.0 / 3, {1e2, 1e4, 1e6}, {1.0 / 30, 1.0 / 120, 1.0 / 480}};
+  }
+};
+
 std::vector<StiffnessRow> stiffness_sweep(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
                                           ImplicitSettings settings,
                                           const std::vector<double>& stiffnesses = {1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7},

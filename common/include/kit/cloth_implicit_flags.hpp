@@ -18,8 +18,9 @@ struct ImplicitFlags {
 /// The chapter's default step for an implicit method [s] when --dt is not given.
 inline constexpr double implicit_default_dt = 1.0 / 30;
 
-/// Adds chapter 6's flags (with --integrator widened to implicit-euler, newton and liu) and
-/// chapter 7's own, each range checked when parsed.
+/// Adds chapter 6's flags (with --integrator widened to implicit-euler, newton and liu, and the
+/// scene "drape" by default), chapter 7's own, --fail-on-divergence and --quick, each range
+/// checked when parsed.
 void add_implicit_cloth_flags(ChapterApp& app, ClothFlags& cloth, ImplicitFlags& implicit);
 
 /// The scene with chapter 6's overrides; an implicit --integrator leaves the scene's own.
