@@ -16,10 +16,11 @@ A batch:
      every report records it;
   3. grades the folders side by side (--jobs): copy the exercise files and nothing else
      (grading/submission.py), check them statically (grading/static_check.py), compile each
-     distinct file once, keyed by its content (identical copies and untouched placeholders are
-     compiled once per batch), run each exercise's judge against its program;
+     distinct file once, keyed by its content and the batch's inputs (identical copies and
+     untouched placeholders are compiled once), or take it from the programs earlier sandboxed
+     batches kept (--cache: grading/program_cache.py), run each exercise's judge against its program;
   4. writes grade.json, grade.md, grade.junit.xml per folder and class.csv, class.md for the batch
-     (grading/reports.py), and removes everything else it made.
+     (grading/reports.py), removes everything else it made, and trims the cache to --cache-mib.
 A student costs only their own grade: each compile and run has CPU, memory, file-size and time
 limits; a student's compiles and runs share a time budget (--student-time) and a disk budget;
 a student's output is capped; grade trees keep only the reports.
@@ -29,6 +30,7 @@ and writes tests/grading/expected_evidence.json: each exercise's test cases and 
 """
 import argparse
 import concurrent.futures
+import contextlib
 import hashlib
 import json
 import math
@@ -47,6 +49,7 @@ import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from grading import build_log, evidence, reports, static_check, submission  # noqa: E402
+from grading.program_cache import ProgramCache, repeatable  # noqa: E402
 from grading.sandbox import BUILD_MEMORY, Limits, Sandbox, SandboxUnavailable, test_limits  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -54,6 +57,9 @@ POINTS = ROOT / "tests" / "grading" / "points.json"
 EXPECTED = ROOT / "tests" / "grading" / "expected_evidence.json"
 REFERENCE_SEED = "20261121"  # the seed ctest and record-evidence use
 SHARED = ".grading-shared"
+# The system headers a student's program may read besides the precompiled ones: with those, their
+# preprocessed text is part of every program's key.
+SYSTEM_PROBE = "#include <fmt/format.h>\n#include <cstdio>\n#include <cstring>\n#include <stdexcept>\n"
 
 COMPILE_LIMITS = Limits(BUILD_MEMORY, 120, True)  # one student file: 120 CPU seconds (the heaviest takes 3)
 COMPILE_WALL = 300            # seconds, one compile
@@ -116,8 +122,8 @@ def digest(*parts):
 class Batch:
     """What every student of a batch shares, built from the kit's code alone before any student's."""
 
-    def __init__(self, out, judges, library, sandbox, points, seed, timeout, student_time, jobs):
-        self.out, self.sandbox, self.points = out, sandbox, points
+    def __init__(self, out, judges, library, sandbox, points, seed, timeout, student_time, jobs, cache=None):
+        self.out, self.sandbox, self.points, self.cache = out, sandbox, points, cache
         self.seed, self.timeout, self.student_time = seed, timeout, student_time
         self.shared = out / SHARED
         if self.shared.exists():
@@ -162,10 +168,19 @@ class Batch:
                                str(self.pch), "-o", str(self.pch) + ".gch"], capture_output=True, text=True)
         if made.returncode != 0:
             print(f"grade: no precompiled header (each compile is slower): {made.stderr[:300]}", file=sys.stderr)
+        # Everything a compile reads but the student's file: the key of its program, in this batch
+        # and in the cache of later ones (grading/program_cache.py). The system headers are taken
+        # preprocessed, so that an upgrade of Eigen, fmt or the C library makes new keys.
         compiler = subprocess.run(["c++", "--version"], capture_output=True, text=True).stdout
-        self.inputs = digest(compiler, " ".join(COMPILE_FLAGS),
-                             *[p.read_bytes() for p in sorted(self.shared.rglob("*")) if p.is_file()
-                               and self.programs not in p.parents and self.judges not in p.parents])
+        system = subprocess.run(["c++", *COMPILE_FLAGS, "-isystem", "/usr/include/eigen3", "-E", "-x", "c++",
+                                 "-include", str(self.pch), "-"], input=SYSTEM_PROBE, capture_output=True,
+                                text=True).stdout.replace(str(self.shared), "<kit>")
+        fmt = subprocess.run(["c++", "-print-file-name=libfmt.so"], capture_output=True, text=True).stdout.strip()
+        kit_files = [p for p in sorted(self.shared.rglob("*")) if p.is_file() and p.suffix != ".gch"
+                     and self.programs not in p.parents and self.judges not in p.parents]
+        self.inputs = digest(compiler, " ".join(COMPILE_FLAGS), COMPILE_LIMITS, COMPILE_FILE_BYTES, system,
+                             os.path.realpath(fmt),
+                             *[part for p in kit_files for part in (str(p.relative_to(self.shared)), p.read_bytes())])
         self.locks, self.locks_guard = {}, threading.Lock()
         self.runs, self.runs_guard = {}, threading.Lock()
         self.compile_width = 1  # compiles per student at once: set by the batch, from --jobs and its size
@@ -179,49 +194,61 @@ class Batch:
 
     def compile(self, stem, source_text):
         """The student's program for one exercise file, compiled once per distinct content in the
-        sandbox. Returns (program path or None, compile log, bytes it added to the disk)."""
+        sandbox, or taken from the cache of earlier batches. Returns (program path or None, compile
+        log, bytes of disk it takes): a student is charged those bytes whoever compiled it first."""
         key = digest(self.inputs, stem, source_text)
         entry = self.programs / key
-        with self.lock(key):
-            if (entry / "done").exists():
-                return (entry / "program" if (entry / "program").exists() else None), \
-                    (entry / "compile.log").read_text(encoding="utf-8", errors="replace"), 0
-            work = self.programs / (key + ".work")
-            if work.exists():
-                shutil.rmtree(work)
-            (work / "src").mkdir(parents=True)
-            (work / "src" / f"{stem}.hpp").write_text(source_text, encoding="utf-8")
-            include, objects = self.allowed[stem]
-            command = ["c++", *COMPILE_FLAGS, "-include", str(self.pch), "-iquote", str(work / "src"),
-                       "-iquote", str(self.harness),
-                       "-I", str(include), "-isystem", "/usr/include/eigen3",
-                       str(self.harness / "harness" / f"{stem}.cpp"), *map(str, objects), str(self.loop), "-lfmt",
-                       "-o", str(work / "program")]
-            readable = [work / "src", self.harness, include, self.loop, *objects]
-            code, log = run_capped(self.sandbox.confined(command, readable, [work], COMPILE_LIMITS,
-                                                         fsize=COMPILE_FILE_BYTES), COMPILE_WALL)
-            # The scratch folder's name and the compiler's temporary files differ from run to run:
-            # a regrade must write the same report.
-            log = re.sub(r"\bcc[A-Za-z0-9]{6}\.", "cc*.", log.replace(str(work), "BUILD"))
-            if "No space left on device" in log or "File too large" in log:
-                log = (f"error: the compile wrote a file over {COMPILE_FILE_BYTES >> 20} MiB, the most any file of a "
-                       "compile may take\n") + log
-            if code is None:
-                log += f"\nthe compile did not finish within {COMPILE_WALL} s"
-            elif died_of(code, signal.SIGXCPU):
-                log += f"\nthe compile used more than {COMPILE_LIMITS.cpu} CPU seconds"
-            elif died_of(code, signal.SIGXFSZ):
-                log += f"\nthe compile wrote a file over {COMPILE_FILE_BYTES} bytes"
-            used = sum(p.stat().st_size for p in work.rglob("*") if p.is_file())
-            entry.mkdir()
-            keep_tail(entry / "compile.log", log)
-            built = work / "program"  # a regular file: a link the compile planted could point anywhere
-            if code == 0 and built.is_file() and not built.is_symlink():
-                os.replace(work / "program", entry / "program")
-            shutil.rmtree(work)
-            (entry / "done").touch()
+        with self.lock(key), (self.cache.claim(key) if self.cache else contextlib.nullcontext()):
+            if not (entry / "done").exists():
+                if not (self.cache and self.cache.fetch(key, entry)):
+                    if self._compile_into(entry, stem, source_text) and self.cache:
+                        self.cache.store(key, entry)
+                (entry / "done").touch()
             program = entry / "program"
-            return (program if program.exists() else None), log, used
+            return ((program if program.exists() else None),
+                    (entry / "compile.log").read_text(encoding="utf-8", errors="replace"),
+                    int((entry / "used").read_text()))
+
+    def _compile_into(self, entry, stem, source_text):
+        """Compiles into the folder `entry`: program (if it built), compile.log, used (bytes the
+        compile wrote). Returns whether every compile of this file would end the same way: it was
+        not stopped by the wall clock, a signal, a CPU limit or a full disk."""
+        work = self.programs / (entry.name + ".work")
+        if work.exists():
+            shutil.rmtree(work)
+        (work / "src").mkdir(parents=True)
+        (work / "src" / f"{stem}.hpp").write_text(source_text, encoding="utf-8")
+        include, objects = self.allowed[stem]
+        command = ["c++", *COMPILE_FLAGS, "-include", str(self.pch), "-iquote", str(work / "src"),
+                   "-iquote", str(self.harness),
+                   "-I", str(include), "-isystem", "/usr/include/eigen3",
+                   str(self.harness / "harness" / f"{stem}.cpp"), *map(str, objects), str(self.loop), "-lfmt",
+                   "-o", str(work / "program")]
+        readable = [work / "src", self.harness, include, self.loop, *objects]
+        code, log = run_capped(self.sandbox.confined(command, readable, [work], COMPILE_LIMITS,
+                                                     fsize=COMPILE_FILE_BYTES), COMPILE_WALL)
+        # The scratch folder's name, the batch's folder and the compiler's temporary files differ
+        # from run to run: a regrade, or a program from the cache, must write the same report.
+        log = re.sub(r"\bcc[A-Za-z0-9]{6}\.", "cc*.",
+                     log.replace(str(work), "BUILD").replace(str(self.shared), "<kit>"))
+        if "No space left on device" in log or "File too large" in log:
+            log = (f"error: the compile wrote a file over {COMPILE_FILE_BYTES >> 20} MiB, the most any file of a "
+                   "compile may take\n") + log
+        if code is None:
+            log += f"\nthe compile did not finish within {COMPILE_WALL} s"
+        elif died_of(code, signal.SIGXCPU):
+            log += f"\nthe compile used more than {COMPILE_LIMITS.cpu} CPU seconds"
+        elif died_of(code, signal.SIGXFSZ):
+            log += f"\nthe compile wrote a file over {COMPILE_FILE_BYTES} bytes"
+        used = sum(p.stat().st_size for p in work.rglob("*") if p.is_file())
+        entry.mkdir()
+        keep_tail(entry / "compile.log", log)
+        (entry / "used").write_text(str(used))
+        built = work / "program"  # a regular file: a link the compile planted could point anywhere
+        if code == 0 and built.is_file() and not built.is_symlink():
+            os.replace(work / "program", entry / "program")
+        shutil.rmtree(work)
+        return repeatable(code, log)
 
     def run(self, exercise, program):
         """Runs one exercise's judge against the student's program; cached per program, since a
@@ -389,6 +416,9 @@ def batch_command(args):
     if args.jobs < 1 or args.jobs > 256:
         print(f"grade: --jobs {args.jobs}: expected a whole number in [1, 256]", file=sys.stderr)
         return 2
+    if not 0 <= args.cache_mib <= 1 << 20:
+        print(f"grade: --cache-mib {args.cache_mib}: expected a whole number of MiB in [0, 1048576]", file=sys.stderr)
+        return 2
     if args.seed is not None and not re.fullmatch(r"[1-9][0-9]{0,8}", args.seed):
         print(f"grade: --seed {args.seed}: expected a whole number in [1, 999999999]", file=sys.stderr)
         return 2
@@ -406,8 +436,14 @@ def batch_command(args):
         return 2
     out.mkdir(parents=True, exist_ok=True)
     print(f"grade: seed {seed} (regrade with --seed {seed})", file=sys.stderr, flush=True)
+    cache = None
+    if args.cache and sandbox.enabled:
+        cache = ProgramCache(args.cache, args.cache_mib << 20)
+    elif args.cache:
+        print("grade: --no-sandbox: the programs of earlier batches are not used, nor these kept (a student's "
+              "program runs with your rights here, and could change them for the next class)", file=sys.stderr)
     batch = Batch(out, args.judges, args.common_library, sandbox, points, seed, args.timeout, args.student_time,
-                  args.jobs)
+                  args.jobs, cache)
     labels = labels_for(folders)
     paths = [out / label / "grade.json" for label in labels]
     batch.compile_width = max(1, args.jobs // min(args.jobs, len(folders)))
@@ -426,6 +462,11 @@ def batch_command(args):
             list(pool.map(one, zip(folders, labels)))
     finally:
         shutil.rmtree(batch.shared, ignore_errors=True)
+        if cache:
+            kept, removed = cache.trim()
+            print(f"grade: {cache.hits} programs from earlier batches, {cache.stores} new kept; the cache "
+                  f"{cache.folder} holds {kept / (1 << 20):.1f} MiB of {args.cache_mib}"
+                  + (f" ({removed} least recently used removed)" if removed else ""), file=sys.stderr)
     loaded = reports.load_reports(paths)
     reports.write_class(points, loaded, out, seed)
     print("\nBatch summary (points, submission, report):")
@@ -477,6 +518,8 @@ def main():
     b.add_argument("--student-time", type=float, default=900.0, help="seconds of compiling and running per student")
     b.add_argument("--seed", help="the seed of a batch to regrade (default: a new one, printed and recorded)")
     b.add_argument("--no-sandbox", action="store_true")
+    b.add_argument("--cache", help="a folder keeping compiled programs for later sandboxed batches")
+    b.add_argument("--cache-mib", type=int, default=1024, help="the most the cache keeps, in MiB")
     b.add_argument("--judges", required=True, help="the kit's build/tests folder: the judges and the program loop")
     b.add_argument("--common-library", required=True,
                    help="the kit's libkit_common.a: the objects an exercise may link")

@@ -10,8 +10,9 @@ The six submissions, generated from the solution markers:
   adversary     solved, but six files attack the grader:
     amplification.hpp   a static initialiser writes outside its tree: a marker file, the kit's
                         points.json and a new file in tests/grading/, a line appended to every
-                        classmate's file, the classmates' grade.json, and the batch's shared
-                        Catch2 main and precompiled header
+                        classmate's file, the classmates' grade.json, the batch's judges and
+                        programs, and every file of the program cache later batches take
+                        programs from (build/grade-cache), where it also plants an entry
     rk4.hpp             std::_Exit(0) in a static initialiser (ctest would say "Passed")
     symplectic_euler.hpp  #define CHECK(...) to silence the checks, with a wrong method
     spring_system.hpp   #include of the kit's own solutions/ file, by absolute path
@@ -39,8 +40,9 @@ The six submissions, generated from the solution markers:
                 is cut at 1 MiB as it is written and 64 KiB of it is kept.
 Checks: class.csv is right; every attacked item scores 0 (integrity, compile error or fail);
 the untouched items still score; the compile error names the student's file and line;
-regrading with the batch's seed writes the same reports byte for byte; --no-sandbox still grades
-the complete submission at full marks and says so; nothing outside the grade trees changed.
+regrading with the batch's seed writes the same reports byte for byte, taking every program the
+first batch kept from the cache; --no-sandbox still grades the complete submission at full marks
+and says so, and neither takes from nor adds to a cache; nothing outside the grade trees changed.
 
 Usage: grade_a_class.py WORK_DIR
 """
@@ -92,6 +94,15 @@ def fingerprint_reports(out):
             if p.name in names and "build" not in p.parts}
 
 
+def cache_counts(stderr, problems):
+    """(programs taken from the cache, programs kept in it) as a batch reports them."""
+    found = re.search(r"grade: (\d+) programs from earlier batches, (\d+) new kept", stderr)
+    if not found:
+        problems.append(f"a sandboxed batch did not report its use of the program cache: {stderr[-500:]}")
+        return -1, -1
+    return int(found.group(1)), int(found.group(2))
+
+
 def main(argv):
     work = pathlib.Path(argv[1]).resolve()
     if work.exists():
@@ -118,14 +129,21 @@ def main(argv):
     # What every classmate's grade goes through: the judges, the programs' loop, the batch's cache.
     judges = sorted((ROOT / "build" / "tests").glob("grade_ex*")) + [ROOT / "build/tests/libkit_remote_student.a"]
     shared = out / ".grading-shared"
+    cache = ROOT / "build" / "grade-cache"  # the programs later batches, and other classes, take
     targets = [str(outside / "pwned"), str(ROOT / "tests/grading/points.json"), str(ROOT / "tests/grading/extra.cpp"),
                *map(str, judges[:2]), str(shared / "judges" / "grade_ex1_1"), str(shared / "programs" / "planted")]
     attack = ("inline const bool kit_attack = [] {\n"
               + "".join(f'  {{ std::ofstream f("{t}"); f << "{{}}"; }}\n' for t in targets + reports)
               + "".join(f'  {{ std::ofstream f("{c}", std::ios::app); f << "// tampered\\n"; }}\n' for c in classmates)
+              + "  std::error_code e;\n"
+              + f'  std::filesystem::create_directories("{cache / "planted"}", e);\n'
+              + f'  {{ std::ofstream f("{cache / "planted" / "program"}"); f << "{{}}"; }}\n'
+              + f'  for (const auto& p : std::filesystem::recursive_directory_iterator("{cache}", e))\n'
+              + '    if (p.is_regular_file(e)) { std::ofstream f(p.path(), std::ios::app); f << "tampered"; }\n'
               + "  return true;\n}();\n")
     adversary = dict(solved)
-    adversary["amplification.hpp"] = prepend(solved["amplification.hpp"].replace("#include <complex>", "#include <complex>\n#include <fstream>"), attack)
+    adversary["amplification.hpp"] = prepend(solved["amplification.hpp"].replace(
+        "#include <complex>", "#include <complex>\n#include <filesystem>\n#include <fstream>"), attack)
     adversary["rk4.hpp"] = prepend(solved["rk4.hpp"].replace("#include <kit/not_implemented.hpp>", "#include <cstdlib>\n#include <kit/not_implemented.hpp>"),
                                    "inline const bool kit_quit = (std::_Exit(0), true);\n")
     adversary["symplectic_euler.hpp"] = solved["symplectic_euler.hpp"].replace(
@@ -215,10 +233,12 @@ def main(argv):
     before_class = fingerprint([classroom])
     judge_digests = {j: hashlib.sha1(j.read_bytes()).hexdigest() for j in judges}
 
+    cached_before = fingerprint([cache])
     run = subprocess.run([str(ROOT / "kit"), "grade", "--out", str(out), "--timeout", "20",
                           *[str(classroom / n) for n in names]], cwd=ROOT, capture_output=True, text=True)
     print(run.stdout[-6000:])
     problems = [] if run.returncode == 0 else [f"./kit grade exited {run.returncode}: {run.stderr[-2000:]}"]
+    first_hits, first_kept = cache_counts(run.stderr, problems)
 
     def expect_row(name, passing, statuses=None):
         report = json.loads((out / name / "grade.json").read_text(encoding="utf-8"))
@@ -278,10 +298,33 @@ def main(argv):
     if again.returncode != 0 or reports_before != reports_after:
         changed_reports = sorted(k for k in reports_before if reports_before[k] != reports_after.get(k))
         problems.append(f"regrading changed the reports: {changed_reports} (exit {again.returncode})")
+    # ...though it compiled nothing that always compiles the same way: every program, and every
+    # compiler error, came from the cache of the first batch (the same bytes, as above).
+    hits, kept = cache_counts(again.stderr, problems)
+    if (hits, kept) != (first_hits + first_kept, 0):
+        problems.append(f"the regrade should take all {first_hits + first_kept} programs of the first batch from the "
+                        f"cache and keep none anew; it took {hits} and kept {kept}")
+    # No student's code reached the cache: what was there is untouched, nothing was planted.
+    cached_after = fingerprint([cache])
+    for path, sha in cached_before.items():
+        if cached_after.get(path, sha) != sha:
+            problems.append(f"{path} in the program cache was changed")
+    if (cache / "planted").exists():
+        problems.append(f"{cache / 'planted'} was planted in the program cache")
 
     # Without the sandbox the judges still decide, and every report says it was not sandboxed.
-    bare = subprocess.run([str(ROOT / "kit"), "grade", "--no-sandbox", "--out", str(work / "bare"),
-                           str(classroom / "complete")], cwd=ROOT, capture_output=True, text=True)
+    # Unsandboxed, a student's program could rewrite the cache: such a batch neither uses nor feeds
+    # it. Given a cache of its own that holds the complete submission's programs, it takes none
+    # of them and adds nothing.
+    bare_cache = work / "bare-cache"
+    shutil.copytree(cache, bare_cache, ignore=shutil.ignore_patterns(".*"))
+    bare_cached = fingerprint([bare_cache])
+    bare = subprocess.run([str(ROOT / "kit"), "grade", "--no-sandbox", "--out", str(work / "bare"), "--cache",
+                           str(bare_cache), str(classroom / "complete")], cwd=ROOT, capture_output=True, text=True)
+    if "--no-sandbox: the programs of earlier batches are not used" not in bare.stderr:
+        problems.append(f"--no-sandbox: the batch did not say it leaves the program cache alone: {bare.stderr[-500:]}")
+    if "programs from earlier batches" in bare.stderr or fingerprint([bare_cache]) != bare_cached:
+        problems.append("--no-sandbox: the batch used the program cache")
     bare_report = work / "bare" / "complete" / "grade.json"
     if bare.returncode != 0 or not bare_report.exists():
         problems.append(f"--no-sandbox: ./kit grade exited {bare.returncode}: {bare.stderr[-500:]}")
