@@ -47,9 +47,16 @@ if ./kit exercises-check 2>/dev/null; then echo "FAILED: exercises-check ran wit
 # no exercise and names what waits (the third tree of chapters.partial-runs, checked here).
 python3 "$kit_root/tests/repo/partial_runs.py" --built none "$work/edition/build" "$work/none"
 # A student who solved everything grades their own copy at full marks, from the edition alone.
+# Beside the kit's build, the batch shares the kit's program cache: a program is taken from it only
+# when every input of its compile (the edition's harness, headers and library objects, the
+# compiler, the file) is byte for byte one the kit compiled in the sandbox.
 cp -r exercises "$work/mine"
 cp "$kit_root"/solutions/*.hpp "$work/mine/"
-./kit grade --out "$work/grades" "$work/mine" >/dev/null
+cache=()
+[ -z "$programs" ] || cache=(--cache "$(dirname "$programs")/grade-cache")
+./kit grade --out "$work/grades" ${cache[@]+"${cache[@]}"} "$work/mine" >/dev/null 2>"$work/grade.err" ||
+  { cat "$work/grade.err"; exit 1; }
+grep "programs from earlier batches" "$work/grade.err" || true
 python3 - "$work/grades/mine/grade.json" <<'PY'
 import json, sys
 g = json.load(open(sys.argv[1], encoding="utf-8"))
