@@ -434,12 +434,18 @@ def batch_command(args):
               "Install bubblewrap, or pass --no-sandbox to grade without it (every report then says so).",
               file=sys.stderr)
         return 2
+    cache = None
+    if args.cache:
+        try:
+            cache = ProgramCache(args.cache, args.cache_mib << 20)
+        except OSError as why:
+            print(f"grade: --cache {args.cache}: cannot keep programs there: {why.strerror or why}", file=sys.stderr)
+            return 2
+    if not sandbox.enabled:
+        cache = None
     out.mkdir(parents=True, exist_ok=True)
     print(f"grade: seed {seed} (regrade with --seed {seed})", file=sys.stderr, flush=True)
-    cache = None
-    if args.cache and sandbox.enabled:
-        cache = ProgramCache(args.cache, args.cache_mib << 20)
-    elif args.cache:
+    if args.cache and not sandbox.enabled:
         print("grade: --no-sandbox: the programs of earlier batches are not used, nor these kept (a student's "
               "program runs with your rights here, and could change them for the next class)", file=sys.stderr)
     batch = Batch(out, args.judges, args.common_library, sandbox, points, seed, args.timeout, args.student_time,

@@ -10,7 +10,9 @@ what it kept, and forgets what it must:
   - only compiles that always end the same way are kept: a program or a compiler error, not a
     compile stopped by the wall clock, a signal (bwrap's 128 + n, the driver's message, a
     negative code) or a full disk;
-  - two processes claiming one key take turns, so two batches at once compile a file once.
+  - two processes claiming one key take turns, so two batches at once compile a file once;
+  - a --cache that cannot be a folder, or a negative --cache-mib, is refused (exit 2, naming it)
+    before the batch writes anything.
 
 Usage: grade_program_cache.py WORK_DIR
 """
@@ -18,6 +20,7 @@ import multiprocessing
 import os
 import pathlib
 import shutil
+import subprocess
 import sys
 import time
 
@@ -119,6 +122,18 @@ def main(argv):
         problems.append("the claims did not both finish")
     elif (turns / "second.held").stat().st_mtime_ns < (turns / "first.released").stat().st_mtime_ns:
         problems.append("the second process held the key while the first still did")
+
+    # A --cache that cannot be a folder is refused before anything is written: exit 2, naming it.
+    not_a_folder = work / "a-file"
+    not_a_folder.write_text("x")
+    for flags, named in ((["--cache", str(not_a_folder)], f"--cache {not_a_folder}"),
+                         (["--cache", str(work / "c"), "--cache-mib", "-1"], "--cache-mib -1")):
+        refused = subprocess.run([sys.executable, str(ROOT / "tools/grade.py"), "batch", "--out", str(work / "out"),
+                                  "--judges", str(work), "--common-library", str(not_a_folder), "--no-sandbox",
+                                  *flags, str(ROOT / "exercises")], capture_output=True, text=True)
+        if refused.returncode != 2 or named not in refused.stderr or (work / "out").exists():
+            problems.append(f"grade.py {' '.join(flags)}: exit {refused.returncode}, expected 2 naming {named} and "
+                            f"no --out folder: {refused.stderr.strip()[:300]}")
 
     for p in problems:
         print(p, file=sys.stderr)
