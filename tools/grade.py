@@ -49,7 +49,7 @@ import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from grading import build_log, evidence, reports, static_check, submission  # noqa: E402
-from grading.program_cache import ProgramCache, repeatable  # noqa: E402
+from grading.program_cache import FORMAT as CACHE_FORMAT, ProgramCache, repeatable  # noqa: E402
 from grading.sandbox import BUILD_MEMORY, Limits, Sandbox, SandboxUnavailable, test_limits  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -175,12 +175,15 @@ class Batch:
         system = subprocess.run(["c++", *COMPILE_FLAGS, "-isystem", "/usr/include/eigen3", "-E", "-x", "c++",
                                  "-include", str(self.pch), "-"], input=SYSTEM_PROBE, capture_output=True,
                                 text=True).stdout.replace(str(self.shared), "<kit>")
-        fmt = subprocess.run(["c++", "-print-file-name=libfmt.so"], capture_output=True, text=True).stdout.strip()
+        fmt = subprocess.run(["c++", "-print-file-name=libfmt.so"], capture_output=True,
+                             text=True).stdout.strip()
         kit_files = [p for p in sorted(self.shared.rglob("*")) if p.is_file() and p.suffix != ".gch"
                      and self.programs not in p.parents and self.judges not in p.parents]
-        self.inputs = digest(compiler, " ".join(COMPILE_FLAGS), COMPILE_LIMITS, COMPILE_FILE_BYTES, system,
+        self.inputs = digest(CACHE_FORMAT, compiler, " ".join(COMPILE_FLAGS), COMPILE_LIMITS,
+                             COMPILE_FILE_BYTES, system,
                              os.path.realpath(fmt),
-                             *[part for p in kit_files for part in (str(p.relative_to(self.shared)), p.read_bytes())])
+                             *[part for p in kit_files
+                               for part in (str(p.relative_to(self.shared)), p.read_bytes())])
         self.locks, self.locks_guard = {}, threading.Lock()
         self.runs, self.runs_guard = {}, threading.Lock()
         self.compile_width = 1  # compiles per student at once: set by the batch, from --jobs and its size
@@ -242,7 +245,7 @@ class Batch:
             log += f"\nthe compile wrote a file over {COMPILE_FILE_BYTES} bytes"
         used = sum(p.stat().st_size for p in work.rglob("*") if p.is_file())
         entry.mkdir()
-        keep_tail(entry / "compile.log", log)
+        (entry / "compile.log").write_text(log, encoding="utf-8")  # whole: the verdict reads it
         (entry / "used").write_text(str(used))
         built = work / "program"  # a regular file: a link the compile planted could point anywhere
         if code == 0 and built.is_file() and not built.is_symlink():
