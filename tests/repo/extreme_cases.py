@@ -5,6 +5,7 @@ result (exit 0) or a refusal (exit 2), print no inf or nan, and leave no tempora
 
 Usage: extreme_cases.py BIN_DIR WORK_DIR
 """
+import os
 import pathlib
 import re
 import shutil
@@ -68,6 +69,14 @@ CASES = [  # (chapter, flags, expected exit code)
 ]
 
 
+def process_state(pid):
+    """The state letter of /proc/PID/stat (R, S, T, ...), or None once the process is gone."""
+    try:
+        return pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (OSError, IndexError):
+        return None
+
+
 def leftovers(folder):
     return [p.name for p in pathlib.Path(folder).rglob("*") if ".tmp-" in p.name]
 
@@ -109,18 +118,22 @@ def main(argv):
         if done.returncode != 2 or "--out" not in done.stderr:
             problems.append(f"--out {bad!r}: exit {done.returncode}, expected 2 naming --out")
 
-    # A run stopped by a timeout (SIGTERM) while a figure is half-written leaves no temporary.
+    # A run stopped by a timeout (SIGTERM) while a figure is half-written leaves no temporary. The
+    # chapter stops itself (SIGSTOP) before its first file is renamed into place, while that file
+    # is a temporary (KIT_STOP_BEFORE_COMMIT, atomic_file.cpp): the signal lands there whatever the
+    # machine's load. (Polling the folder for a temporary missed it on a busy machine.)
     out = work / "killed"
     process = subprocess.Popen([str(bin_dir / "02-spring-stability"), "--quiet", "--out", str(out)],
-                               start_new_session=True)
+                               start_new_session=True, env=dict(os.environ, KIT_STOP_BEFORE_COMMIT="1"))
     deadline = time.monotonic() + 120
-    while not (out.exists() and leftovers(out)) and process.poll() is None and time.monotonic() < deadline:
-        time.sleep(0.002)  # until a temporary exists: the signal then lands mid-write
-    caught = out.exists() and bool(leftovers(out))
-    process.send_signal(signal.SIGTERM)
+    while process.poll() is None and process_state(process.pid) != "T" and time.monotonic() < deadline:
+        time.sleep(0.002)
+    caught = process.poll() is None and process_state(process.pid) == "T" and bool(leftovers(out))
+    process.send_signal(signal.SIGTERM)  # pending until the chapter runs again
+    process.send_signal(signal.SIGCONT)
     code = process.wait(timeout=60)
     if not caught:
-        problems.append("never saw a temporary file to interrupt")
+        problems.append(f"never saw the chapter stopped with a temporary file to interrupt (exit {code})")
     elif code != -signal.SIGTERM:
         problems.append(f"SIGTERM mid-write: exit {code}, expected death by SIGTERM")
     elif leftovers(out):
