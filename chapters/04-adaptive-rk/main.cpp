@@ -121,12 +121,10 @@ int main(int argc, char** argv) {
   std::string problem = "arenstorf", method = "dopri5";
   kit::ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR,
                       "Chapter 4: adaptive Runge-Kutta against GSL and Boost.Odeint");
-  app.cli().add_option("--problem", problem, "arenstorf (orbit, T = 17.07) or kepler (ellipse, T = 2π)")
-      ->check(CLI::IsMember({"arenstorf", "kepler"}));
-  app.cli()
-      .add_option("--method", method, "the detailed run: dopri5 (production), cash-karp or bogacki-shampine "
-                  "(general driver)")
-      ->check(CLI::IsMember({"dopri5", "cash-karp", "bogacki-shampine"}));
+  app.add_choice("--problem", problem, "arenstorf (orbit, T = 17.07) or kepler (ellipse, T = 2π)",
+                 {"arenstorf", "kepler"});
+  app.add_choice("--method", method, "the detailed run: dopri5 (production), cash-karp or bogacki-shampine "
+                 "(general driver)", {"dopri5", "cash-karp", "bogacki-shampine"});
   app.add_real("--rtol", rtol, "relative tolerance of the detailed run", kit::between(1e-13, 1e-1));
   app.add_real("--atol", atol, "absolute tolerance of the detailed run, units of y",
                kit::between(1e-13, 1e-1));

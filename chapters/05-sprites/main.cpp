@@ -107,7 +107,7 @@ void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
   std::string movie = "Animation:";
   for (const auto& file : made->movie.files) {
     app.summary()["figures"]["animation"].push_back(file.string());
-    movie += " " + file.string();
+    movie.append(" ").append(file.string());  // not " " + …: a false -Wrestrict alarm of GCC 12
   }
   app.report().say("animation", "{files}\nPlay the frames: gnuplot -persist {player}\n",
                    {{"files", made->movie.files.empty() ? made->movie.note : movie},

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <kit/atomic_file.hpp>
@@ -77,29 +78,31 @@ void check_summary_file(const std::string& file) {
 }
 
 ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::string description)
-    : chapter_(std::move(chapter)), app_(std::move(description), chapter_) {
+    : chapter_(std::move(chapter)), app_(std::make_unique<CLI::App>(std::move(description), chapter_)) {
   options_.out_dir = std::move(default_out_dir);
-  app_.option_defaults()->always_capture_default();
-  app_.get_formatter()->column_width(34);
-  app_.add_option("--out", options_.out_dir, "folder for the figures (data, gnuplot script, renders)")
+  app_->option_defaults()->always_capture_default();
+  app_->get_formatter()->column_width(34);
+  app_->add_option("--out", options_.out_dir, "folder for the figures (data, gnuplot script, renders)")
       ->type_name("DIR");
-  app_.add_option("--format", options_.formats, "renders to write, comma-separated: pdf, png, svg")
+  app_->add_option("--format", options_.formats, "renders to write, comma-separated: pdf, png, svg")
       ->delimiter(',')
       ->type_name("LIST")
       ->check(CLI::IsMember({"pdf", "png", "svg"}));
-  app_.add_flag("--no-plot", options_.no_plot, "write no figure files at all");
-  app_.add_flag("--show", options_.show, "also open each figure in a window when a display exists");
-  app_.add_flag("--json", options_.json, "print one JSON summary object on stdout, and nothing else");
-  app_.add_flag("--quiet", options_.quiet, "print nothing on stdout");
-  app_.add_option("--summary", options_.summary_file,
+  app_->add_flag("--no-plot", options_.no_plot, "write no figure files at all");
+  app_->add_flag("--show", options_.show, "also open each figure in a window when a display exists");
+  app_->add_flag("--json", options_.json, "print one JSON summary object on stdout, and nothing else");
+  app_->add_flag("--quiet", options_.quiet, "print nothing on stdout");
+  app_->add_option("--summary", options_.summary_file,
                   "also write the JSON summary (as --json prints it) to FILE, whatever stdout shows")
       ->type_name("FILE");
   // For the flag-table test: every numeric flag with its range, as JSON; not in --help.
-  app_.add_flag("--flag-table", flag_table_requested_, "")->group("");
+  app_->add_flag("--flag-table", flag_table_requested_, "")->group("");
   summary_["chapter"] = chapter_;
   stdout_buffer_ = std::make_unique<ClearingBuffer>(std::cout.rdbuf());
   stdout_.rdbuf(stdout_buffer_.get());
 }
+
+ChapterApp::~ChapterApp() = default;
 
 void ChapterApp::add_real(const std::string& flag, double& value, const std::string& help, RealRange range) {
   auto check = [flag, range](std::string& input) -> std::string {
@@ -112,13 +115,18 @@ void ChapterApp::add_real(const std::string& flag, double& value, const std::str
       return fmt::format("value {} is out of range; expected {}", input, range.describe());
     return {};
   };
-  app_.add_option(flag, value, fmt::format("{}; {}", help, range.describe()))
+  app_->add_option(flag, value, fmt::format("{}; {}", help, range.describe()))
       ->check(CLI::Validator(check, "", ""))
       ->type_name("REAL");
   const std::string key = flag.substr(flag.find_first_not_of('-'));
   record_parameters_.push_back([this, key, &value] { summary_["parameters"][key] = value; });
   flag_table_.push_back({{"flag", flag}, {"kind", "real"}, {"default", value}, {"lo", range.lo}, {"hi", range.hi},
                          {"lo_open", range.lo_open}, {"hi_open", range.hi_open}, {"nonzero", range.nonzero}});
+}
+
+void ChapterApp::add_choice(const std::string& flag, std::string& value, const std::string& help,
+                            const std::vector<std::string>& choices) {
+  app_->add_option(flag, value, help)->check(CLI::IsMember(choices))->type_name("NAME")->capture_default_str();
 }
 
 void ChapterApp::add_count(const std::string& flag, long& value, const std::string& help, long lo, long hi) {
@@ -138,7 +146,7 @@ void ChapterApp::add_count(const std::string& flag, long& value, const std::stri
     input = fmt::format("{}", read.value);  // CLI11 then reads plain digits: "1e9" arrives as 1000000000
     return {};
   };
-  app_.add_option(flag, value, fmt::format("{}; a whole number in [{}, {}]", help, lo, hi))
+  app_->add_option(flag, value, fmt::format("{}; a whole number in [{}, {}]", help, lo, hi))
       ->transform(CLI::Validator(check, "", ""))  // a transform: it may rewrite "1e9" in digits
       ->type_name("N");
   const std::string key = flag.substr(flag.find_first_not_of('-'));
@@ -174,12 +182,12 @@ void ChapterApp::figure(const Figure& fig) {
 }
 
 void ChapterApp::add_divergence_flag() {
-  app_.add_flag("--fail-on-divergence", options_.fail_on_divergence,
+  app_->add_flag("--fail-on-divergence", options_.fail_on_divergence,
                 "exit with code 3 when a simulation diverged (it is reported either way)");
 }
 
 void ChapterApp::add_quick_flag(const std::string& sizes) {
-  app_.add_flag("--quick", options_.quick,
+  app_->add_flag("--quick", options_.quick,
                 fmt::format("the lecture's experiments at reduced sizes ({}): a first look in a fraction of the "
                             "time; the README's numbers are those of the full run", sizes));
   record_parameters_.push_back([this] { summary_["parameters"]["quick"] = options_.quick; });
@@ -193,9 +201,9 @@ void ChapterApp::parse_only_for_fuzzing() { parse_only = true; }
 
 int ChapterApp::run(int argc, const char* const* argv, const std::function<void()>& body) {
   try {
-    app_.parse(argc, argv);
+    app_->parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app_.exit(e);  // --help
+    if (e.get_exit_code() == 0) return app_->exit(e);  // --help
     std::cerr << chapter_ << ": error: " << e.what() << "\nRun '" << chapter_
               << " --help' to see every flag, its unit and its allowed range.\n";
     return exit_code::usage;

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 namespace kit {

@@ -3,6 +3,7 @@
 #include <climits>
 #include <map>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <kit/sprite_scene_file.hpp>

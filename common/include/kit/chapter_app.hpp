@@ -1,6 +1,9 @@
 #pragma once
 // One chapter binary: its flags (CLI11), where its text, JSON summary and figures go, and how
-// it ends. The conventions every chapter shares:
+// it ends. CLI11 stays out of this header: it is header-only, and every file that includes it
+// compiles its parser, help formatter and config reader again (about 4 s a file at -O3, in each
+// chapter's main.cpp of each tree the tests build). Library code that adds its own options
+// includes <CLI/CLI.hpp> and uses cli(). The conventions every chapter shares:
 //  - physical parameters are flags with SI units in their help and a stated allowed range;
 //  - bad input is a usage error: the message names the flag, the value and the range, the
 //    exit code is 2 and nothing is written;
@@ -14,7 +17,6 @@
 #include <utility>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <kit/figure.hpp>
@@ -22,6 +24,10 @@
 #include <kit/real_range.hpp>
 #include <kit/report.hpp>
 #include <kit/usage.hpp>
+
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace kit {
 
@@ -46,13 +52,21 @@ struct CommonOptions {
 class ChapterApp {
  public:
   ChapterApp(std::string chapter, std::string default_out_dir, std::string description);
+  ~ChapterApp();
+  ChapterApp(const ChapterApp&) = delete;
+  ChapterApp& operator=(const ChapterApp&) = delete;
 
   /// A real-valued flag stored into `value` (whose initial value is the default). `help`
   /// names the quantity and its SI unit; `range` is enforced at parse time.
   void add_real(const std::string& flag, double& value, const std::string& help, RealRange range);
   /// A whole-number flag in [lo, hi].
   void add_count(const std::string& flag, long& value, const std::string& help, long lo, long hi);
-  CLI::App& cli() { return app_; }
+  /// A flag that takes one of `choices` (names, such as a problem or a method), stored into `value`
+  /// (whose initial value is the default); any other value is a usage error naming them.
+  void add_choice(const std::string& flag, std::string& value, const std::string& help,
+                  const std::vector<std::string>& choices);
+  /// The parser itself, for options of other kinds; include <CLI/CLI.hpp> to use it.
+  CLI::App& cli() { return *app_; }
 
   /// Parses the flags and runs `body`. Returns the exit code: 0 after --help or success,
   /// 2 on a usage error (message on stderr, nothing written), 1 on another failure.
@@ -108,7 +122,7 @@ class ChapterApp {
 
  private:
   std::string chapter_;
-  CLI::App app_;
+  std::unique_ptr<CLI::App> app_;
   CommonOptions options_;
   nlohmann::json summary_;
   std::vector<std::function<void()>> record_parameters_;
