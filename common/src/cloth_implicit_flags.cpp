@@ -23,7 +23,7 @@ void add_implicit_cloth_flags(ChapterApp& app, ClothFlags& cloth, ImplicitFlags&
   cloth.scene = "drape";  // chapter 7's default scene, before --scene records its default
   add_cloth_flags(app, cloth, implicit);
   app.add_divergence_flag();
-  app.add_quick_flag("three stiffnesses in the sweep, a trade over 1/3 s, three steps per solver curve");
+  app.add_quick_flag("three stiffnesses in the sweep, a trade over 1/3 s, solver curves at h = 1/30 to 1/120 s");
   app.cli()
       .add_option("--solver", f.solver,
                   "linear solver: cg (Eigen, diagonal preconditioner), pcg (ex 7.3, filtered) or mg (filtered, "
