@@ -81,6 +81,31 @@ def leftovers(folder):
     return [p.name for p in pathlib.Path(folder).rglob("*") if ".tmp-" in p.name]
 
 
+def sigterm_mid_write(bin_dir, out):
+    """The problems of a run stopped by a timeout (SIGTERM) while a figure is half-written: it must
+    leave no temporary. The chapter stops itself (SIGSTOP) before its first file is renamed into
+    place, while that file is a temporary (KIT_STOP_BEFORE_COMMIT, atomic_file.cpp): the signal
+    lands there whatever the machine's load. (Polling the folder for a temporary missed it on a
+    busy machine.)"""
+    problems = []
+    process = subprocess.Popen([str(bin_dir / "02-spring-stability"), "--quiet", "--out", str(out)],
+                               start_new_session=True, env=dict(os.environ, KIT_STOP_BEFORE_COMMIT="1"))
+    deadline = time.monotonic() + 120
+    while process.poll() is None and process_state(process.pid) != "T" and time.monotonic() < deadline:
+        time.sleep(0.002)
+    caught = process.poll() is None and process_state(process.pid) == "T" and bool(leftovers(out))
+    process.send_signal(signal.SIGTERM)  # pending until the chapter runs again
+    process.send_signal(signal.SIGCONT)
+    code = process.wait(timeout=60)
+    if not caught:
+        problems.append(f"never saw the chapter stopped with a temporary file to interrupt (exit {code})")
+    elif code != -signal.SIGTERM:
+        problems.append(f"SIGTERM mid-write: exit {code}, expected death by SIGTERM")
+    elif leftovers(out):
+        problems.append(f"SIGTERM mid-write left {leftovers(out)}")
+    return problems
+
+
 def main(argv):
     bin_dir, work = pathlib.Path(argv[1]), pathlib.Path(argv[2])
     shutil.rmtree(work, ignore_errors=True)
@@ -118,26 +143,7 @@ def main(argv):
         if done.returncode != 2 or "--out" not in done.stderr:
             problems.append(f"--out {bad!r}: exit {done.returncode}, expected 2 naming --out")
 
-    # A run stopped by a timeout (SIGTERM) while a figure is half-written leaves no temporary. The
-    # chapter stops itself (SIGSTOP) before its first file is renamed into place, while that file
-    # is a temporary (KIT_STOP_BEFORE_COMMIT, atomic_file.cpp): the signal lands there whatever the
-    # machine's load. (Polling the folder for a temporary missed it on a busy machine.)
-    out = work / "killed"
-    process = subprocess.Popen([str(bin_dir / "02-spring-stability"), "--quiet", "--out", str(out)],
-                               start_new_session=True, env=dict(os.environ, KIT_STOP_BEFORE_COMMIT="1"))
-    deadline = time.monotonic() + 120
-    while process.poll() is None and process_state(process.pid) != "T" and time.monotonic() < deadline:
-        time.sleep(0.002)
-    caught = process.poll() is None and process_state(process.pid) == "T" and bool(leftovers(out))
-    process.send_signal(signal.SIGTERM)  # pending until the chapter runs again
-    process.send_signal(signal.SIGCONT)
-    code = process.wait(timeout=60)
-    if not caught:
-        problems.append(f"never saw the chapter stopped with a temporary file to interrupt (exit {code})")
-    elif code != -signal.SIGTERM:
-        problems.append(f"SIGTERM mid-write: exit {code}, expected death by SIGTERM")
-    elif leftovers(out):
-        problems.append(f"SIGTERM mid-write left {leftovers(out)}")
+    problems += sigterm_mid_write(bin_dir, work / "killed")
 
     for p in problems:
         print(p, file=sys.stderr)
