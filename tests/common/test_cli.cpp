@@ -15,14 +15,17 @@ struct Outcome {
   std::string err;
   bool body_ran;
   double dt;
+  std::string shape;
   nlohmann::json summary;
 };
 Outcome run_app(std::vector<std::string> args, const std::string& out_dir = "unused-out") {
   double dt = 0.1;
   long count = 5;
+  std::string shape = "circle";
   kit::ChapterApp app("toy", out_dir, "a toy chapter");
   app.add_real("--dt", dt, "time step [s]", kit::positive(10));
   app.add_count("--count", count, "how many", 1, 100);
+  app.add_choice("--shape", shape, "the toy's shape", {"circle", "square"});
   args.insert(args.begin(), "toy");
   std::vector<const char*> argv;
   for (auto& a : args) argv.push_back(a.c_str());
@@ -31,7 +34,7 @@ Outcome run_app(std::vector<std::string> args, const std::string& out_dir = "unu
   bool ran = false;
   const int code = app.run(int(argv.size()), argv.data(), [&] { ran = true; });
   std::cerr.rdbuf(old);
-  return {code, captured.str(), ran, dt, app.summary()};
+  return {code, captured.str(), ran, dt, shape, app.summary()};
 }
 }  // namespace
 
@@ -75,6 +78,20 @@ TEST_CASE("a whole number may be written as a number (1e2), never as a fraction,
     CHECK_FALSE(outcome.body_ran);
     CHECK_THAT(outcome.err, ContainsSubstring("--count") && ContainsSubstring("value " + refused) &&
                                 ContainsSubstring("[1, 100]"));
+  }
+}
+
+TEST_CASE("a named choice takes one of its names; any other is a usage error naming the flag and the names") {
+  CHECK(run_app({"--quiet", "--no-plot"}).shape == "circle");
+  const auto chosen = run_app({"--shape", "square", "--quiet", "--no-plot"});
+  CHECK(chosen.code == 0);
+  CHECK(chosen.shape == "square");
+  for (const std::string refused : {"triangle", "", "Square", "circle,square"}) {
+    const auto outcome = run_app({"--shape", refused});
+    INFO(refused << ": " << outcome.err);
+    CHECK(outcome.code == 2);
+    CHECK_FALSE(outcome.body_ran);
+    CHECK_THAT(outcome.err, ContainsSubstring("--shape") && ContainsSubstring("{circle,square}"));
   }
 }
 
