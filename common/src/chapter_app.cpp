@@ -93,7 +93,7 @@ ChapterApp::ChapterApp(std::string chapter, std::string default_out_dir, std::st
   app_->add_flag("--json", options_.json, "print one JSON summary object on stdout, and nothing else");
   app_->add_flag("--quiet", options_.quiet, "print nothing on stdout");
   app_->add_option("--summary", options_.summary_file,
-                  "also write the JSON summary (as --json prints it) to FILE, whatever stdout shows")
+                   "also write the JSON summary (as --json prints it) to FILE, whatever stdout shows")
       ->type_name("FILE");
   // For the flag-table test: every numeric flag with its range, as JSON; not in --help.
   app_->add_flag("--flag-table", flag_table_requested_, "")->group("");

@@ -42,10 +42,8 @@ void add_cloth_flags(ChapterApp& app, ClothFlags& f, const std::vector<std::stri
   for (ClothIntegrator i : all_cloth_integrators) names.emplace_back(flag_name(i));
   names.insert(names.end(), more_integrators.begin(), more_integrators.end());
   const std::string default_one = more_integrators.empty() ? "the scene's" : more_integrators.front();
-  app.cli()
-      .add_option("--integrator", f.integrator, fmt::format("{} (default: {})", fmt::join(names, ", "), default_one))
-      ->check(CLI::IsMember(names))
-      ->type_name("NAME");
+  app.add_choice("--integrator", f.integrator,
+                 fmt::format("{} (default: {})", fmt::join(names, ", "), default_one), names);
   app.add_real("--dt", f.dt, "time step Δt [s] (default: the scene's)", positive(1));
   app.add_real("--t-end", f.t_end, "simulated duration [s] (default: the scene's)", positive(1e4));
   app.add_count("--resolution", f.resolution,

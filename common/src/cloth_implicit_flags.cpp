@@ -24,13 +24,10 @@ void add_implicit_cloth_flags(ChapterApp& app, ClothFlags& cloth, ImplicitFlags&
   add_cloth_flags(app, cloth, implicit);
   app.add_divergence_flag();
   app.add_quick_flag("three stiffnesses in the sweep, a trade over 1/3 s, solver curves at h = 1/30 to 1/120 s");
-  app.cli()
-      .add_option("--solver", f.solver,
-                  "linear solver: cg (Eigen, diagonal preconditioner), pcg (ex 7.3, filtered) or mg (filtered, "
-                  "multigrid preconditioner: the fast one)")
-      ->check(CLI::IsMember({"cg", "pcg", "mg"}))
-      ->type_name("NAME")
-      ->capture_default_str();
+  app.add_choice("--solver", f.solver,
+                 "linear solver: cg (Eigen, diagonal preconditioner), pcg (ex 7.3, filtered) or mg "
+                 "(filtered, multigrid preconditioner: the fast one)",
+                 {"cg", "pcg", "mg"});
   app.add_real("--cg-tol", f.cg_tol, "relative residual of each linear solve", between(1e-14, 0.5));
   app.add_count("--iterations", f.iterations,
                 "the scene run's Liu local/global iterations, or Newton's most (the fixed experiments use 10)", 1, 1000);

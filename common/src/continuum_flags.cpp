@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <kit/usage.hpp>
@@ -15,18 +14,12 @@ void add_continuum_flags(ChapterApp& app, ContinuumFlags& f) {
   app.add_real("--poisson", f.poisson, "Poisson's ratio ν", between(0, 0.49));
   app.add_real("--density", f.density, "density ρ [kg/m³]", between(1, 1e5));
   app.add_count("--resolution", f.resolution, "the spinning plate's cells per side", 2, 128);
-  app.cli().add_option("--mesh", f.mesh, "the plate's mesh: regular (alternating diagonals) or irregular")
-      ->check(CLI::IsMember({"regular", "irregular"}))
-      ->type_name("NAME")
-      ->capture_default_str();
-  app.cli().add_option("--model", f.model, "the plate's model: linear, stvk or springs")
-      ->check(CLI::IsMember({"linear", "stvk", "springs"}))
-      ->type_name("NAME")
-      ->capture_default_str();
-  app.cli().add_option("--integrator", f.integrator, "the plate's integrator: explicit (symplectic Euler) or implicit")
-      ->check(CLI::IsMember({"explicit", "implicit"}))
-      ->type_name("NAME")
-      ->capture_default_str();
+  app.add_choice("--mesh", f.mesh, "the plate's mesh: regular (alternating diagonals) or irregular",
+                 {"regular", "irregular"});
+  app.add_choice("--model", f.model, "the plate's model: linear, stvk or springs",
+                 {"linear", "stvk", "springs"});
+  app.add_choice("--integrator", f.integrator,
+                 "the plate's integrator: explicit (symplectic Euler) or implicit", {"explicit", "implicit"});
   app.add_real("--dt", f.dt, "the plate's time step h [s]; 0: 0.9 of the explicit limit, or 1 ms implicit",
                between(0, 0.1));
   app.add_real("--t-end", f.t_end, "how long the plate spins [s]", positive(100));

@@ -54,16 +54,11 @@ Vec3 parse_omega(const std::string& text) {
 }  // namespace
 
 void add_rigid_flags(ChapterApp& app, RigidFlags& f) {
-  app.cli().add_option("--body", f.body, "the free body: t-handle, box or cylinder (the drops use the box)")
-      ->check(CLI::IsMember({"t-handle", "box", "cylinder"}))
-      ->type_name("NAME")
-      ->capture_default_str();
+  app.add_choice("--body", f.body, "the free body: t-handle, box or cylinder (the drops use the box)",
+                 {"t-handle", "box", "cylinder"});
   const auto names = integrator_flag_names();
-  app.cli().add_option("--integrator", f.integrator,
-                       fmt::format("the scene runs' rotation integrator: {}", fmt::join(names, ", ")))
-      ->check(CLI::IsMember(names))
-      ->type_name("NAME")
-      ->capture_default_str();
+  app.add_choice("--integrator", f.integrator,
+                 fmt::format("the scene runs' rotation integrator: {}", fmt::join(names, ", ")), names);
   app.add_real("--dt", f.dt, "time step h [s] of the runs at one step", positive(0.1));
   app.add_real("--t-end", f.t_end, "duration of the free body's runs [s]", positive(1e5));
   app.cli().add_option("--omega0", f.omega0, "initial angular velocity in the body frame [rad/s], as x,y,z")

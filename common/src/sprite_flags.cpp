@@ -28,11 +28,9 @@ void add_sprite_flags(ChapterApp& app, SpriteFlags& f) {
   app.add_count("--frames", f.frames, "frames to run (default: the scene's)", 1, 20000);
   app.add_real("--fps", f.fps, "frames per second, Δt = 1/fps [1/s] (default: the scene's)", between(1, 1000));
   app.add_count("--seed", f.seed, "random seed: the same seed gives the same frames and data", 0, LONG_MAX);
-  app.cli()
-      .add_option("--integrator", f.integrator, "euler, symplectic, midpoint or exact (the closed form of gravity "
-                  "plus drag)")
-      ->check(CLI::IsMember({"euler", "symplectic", "midpoint", "exact"}))
-      ->capture_default_str();
+  app.add_choice("--integrator", f.integrator,
+                 "euler, symplectic, midpoint or exact (the closed form of gravity plus drag)",
+                 {"euler", "symplectic", "midpoint", "exact"});
   app.add_count("--width", f.width, "frame width [px]", 16, 7680);
   app.add_count("--height", f.height, "frame height [px]", 16, 4320);
   app.add_count("--max-particles", f.max_particles, "particles alive at most (default: the scene's)", 1,
