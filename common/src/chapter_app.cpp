@@ -126,7 +126,8 @@ void ChapterApp::add_real(const std::string& flag, double& value, const std::str
 
 void ChapterApp::add_choice(const std::string& flag, std::string& value, const std::string& help,
                             const std::vector<std::string>& choices) {
-  app_->add_option(flag, value, help)->check(CLI::IsMember(choices))->type_name("NAME")->capture_default_str();
+  // --help shows the default: the constructor set always_capture_default() for every option.
+  app_->add_option(flag, value, help)->check(CLI::IsMember(choices))->type_name("NAME");
 }
 
 void ChapterApp::add_count(const std::string& flag, long& value, const std::string& help, long lo, long hi) {
