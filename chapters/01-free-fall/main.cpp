@@ -7,13 +7,13 @@
 
 #include <fmt/format.h>
 
-#include <kit/euler_gap.hpp>
-#include <kit/free_fall_flags.hpp>
 #include <kit/step_count.hpp>
 
+#include "euler_gap.hpp"
 #include "free_fall_costs.hpp"
 #include "free_fall_euler.hpp"
 #include "free_fall_figures.hpp"
+#include "free_fall_flags.hpp"
 
 namespace {
 struct Setup {

@@ -14,12 +14,12 @@
 #include <kit/energy_drift.hpp>
 #include <kit/fixed_steps.hpp>
 #include <kit/free_fall.hpp>
-#include <kit/scheme_figures.hpp>
 #include <kit/spring.hpp>
-#include <kit/spring_flags.hpp>
 
 #include "explicit_euler.hpp"
 #include "midpoint.hpp"
+#include "scheme_figures.hpp"
+#include "spring_flags.hpp"
 #include "spring_steppers.hpp"
 
 namespace {

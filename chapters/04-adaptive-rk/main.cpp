@@ -9,16 +9,16 @@
 
 #include <fmt/format.h>
 
-#include <kit/adaptive_figures.hpp>
 #include <kit/butcher_tableau.hpp>
 #include <kit/chapter_app.hpp>
 #include <kit/orbit_problem.hpp>
 #include <kit/run_fields.hpp>
 #include <kit/van_der_pol_stiffness.hpp>
 #include <kit/work_precision.hpp>
-#include <kit/work_precision_report.hpp>
 
+#include "adaptive_figures.hpp"
 #include "adaptive_rk_methods.hpp"
+#include "work_precision_report.hpp"
 
 namespace {
 using Run = kit::NamedRun<4>;

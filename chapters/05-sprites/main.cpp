@@ -10,11 +10,11 @@
 
 #include <kit/animation.hpp>
 #include <kit/chapter_app.hpp>
-#include <kit/emission_check.hpp>
 #include <kit/measure.hpp>
-#include <kit/sprite_figures.hpp>
-#include <kit/sprite_flags.hpp>
 
+#include "emission_check.hpp"
+#include "sprite_figures.hpp"
+#include "sprite_flags.hpp"
 #include "sprite_kernels.hpp"
 
 namespace {

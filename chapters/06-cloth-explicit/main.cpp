@@ -8,14 +8,14 @@
 #include <fmt/format.h>
 
 #include <kit/chapter_app.hpp>
-#include <kit/cloth_figures.hpp>
-#include <kit/cloth_flags.hpp>
-#include <kit/cloth_output.hpp>
-#include <kit/cloth_tables.hpp>
 #include <kit/spring_force_check.hpp>
 
+#include "cloth_figures.hpp"
+#include "cloth_flags.hpp"
 #include "cloth_kernels.hpp"
+#include "cloth_output.hpp"
 #include "cloth_spring_force.hpp"
+#include "cloth_tables.hpp"
 
 namespace {
 namespace fs = std::filesystem;

@@ -6,13 +6,13 @@
 #include <fmt/format.h>
 
 #include <kit/chapter_app.hpp>
-#include <kit/cloth_implicit_figures.hpp>
-#include <kit/cloth_implicit_flags.hpp>
-#include <kit/cloth_implicit_tables.hpp>
-#include <kit/cloth_output.hpp>
 
+#include "cloth_implicit_figures.hpp"
+#include "cloth_implicit_flags.hpp"
+#include "cloth_implicit_tables.hpp"
 #include "cloth_implicit_wiring.hpp"
 #include "cloth_kernels.hpp"
+#include "cloth_output.hpp"
 
 namespace {
 using kit::ChapterApp, kit::ClothScene, kit::ClothKernels, kit::ImplicitKernels, kit::ImplicitSettings;

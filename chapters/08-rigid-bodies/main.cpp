@@ -8,15 +8,15 @@
 #include <fmt/format.h>
 
 #include <kit/chapter_app.hpp>
-#include <kit/rigid_figures.hpp>
-#include <kit/rigid_flags.hpp>
-#include <kit/rigid_report.hpp>
 #include <kit/run_estimate.hpp>
 
-#include <kit/rigid_output.hpp>
 #include <kit/rigid_renderer.hpp>
 
+#include "rigid_figures.hpp"
+#include "rigid_flags.hpp"
 #include "rigid_kernels.hpp"
+#include "rigid_output.hpp"
+#include "rigid_report.hpp"
 
 namespace {
 using kit::ChapterApp, kit::RigidKernels, kit::RigidSetup, kit::RigidState, kit::RotationIntegrator;

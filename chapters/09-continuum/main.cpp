@@ -7,12 +7,12 @@
 #include <fmt/format.h>
 
 #include <kit/chapter_app.hpp>
-#include <kit/continuum_figures.hpp>
-#include <kit/continuum_flags.hpp>
-#include <kit/continuum_report.hpp>
-#include <kit/fem_output.hpp>
 
+#include "continuum_figures.hpp"
+#include "continuum_flags.hpp"
+#include "continuum_report.hpp"
 #include "fem_kernels.hpp"
+#include "fem_output.hpp"
 
 namespace {
 using kit::ChapterApp, kit::ContinuumKernels, kit::ContinuumSetup, kit::FemModel, kit::TipSolver;

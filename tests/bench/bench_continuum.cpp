@@ -34,7 +34,6 @@
 #include <Eigen/SparseCholesky>
 #include <fmt/format.h>
 
-#include <kit/continuum_experiments.hpp>
 #include <kit/fem_body.hpp>
 #include <kit/fem_element.hpp>
 #include <kit/fem_integrators.hpp>
@@ -42,12 +41,13 @@
 #include <kit/table.hpp>
 
 #include "bandwidth.hpp"
-#include "machine_note.hpp"
 #include "cloth_jacobian.hpp"
 #include "cloth_pcg.hpp"
 #include "cloth_spring_force.hpp"
+#include "continuum_experiments.hpp"
 #include "cpu_clock.hpp"
 #include "fem_kernels.hpp"
+#include "machine_note.hpp"
 
 namespace {
 // Every time below is read from the CPU clock; the triads keep bandwidth.hpp's wall clock.

@@ -12,7 +12,6 @@
 
 #include <kit/image.hpp>
 #include <kit/particle_update.hpp>
-#include <kit/sprite_flags.hpp>
 #include <kit/sprite_renderer.hpp>
 #include <kit/sprite_scene_file.hpp>
 #include <kit/sprite_system.hpp>
@@ -22,6 +21,7 @@
 #include "bandwidth.hpp"
 #include "sprite_age_kill.hpp"
 #include "sprite_emit.hpp"
+#include "sprite_flags.hpp"
 
 namespace {
 using kit_bench::fastest, kit_bench::last_level_cache, kit_bench::triad_bandwidth;

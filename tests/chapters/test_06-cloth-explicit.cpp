@@ -13,13 +13,13 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <kit/cloth_mesh_dependence.hpp>
 #include <kit/cloth_run.hpp>
 #include <kit/cloth_scene_file.hpp>
 #include <kit/cloth_stability.hpp>
 #include <kit/obj_mesh.hpp>
 
 #include "cloth_kernels.hpp"
+#include "cloth_mesh_dependence.hpp"
 #include "cloth_spring_force.hpp"
 #include "process.hpp"
 

@@ -16,11 +16,11 @@
 #include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include <kit/cloth_implicit_experiments.hpp>
 #include <kit/cloth_liu.hpp>
 #include <kit/cloth_multigrid.hpp>
 #include <kit/cloth_scene_file.hpp>
 
+#include "cloth_implicit_experiments.hpp"
 #include "cloth_implicit_wiring.hpp"
 #include "cloth_kernels.hpp"
 #include "process.hpp"

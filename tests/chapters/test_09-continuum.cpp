@@ -13,11 +13,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <kit/continuum_experiments.hpp>
 #include <kit/obj_mesh.hpp>
 
-#include "fem_kernels.hpp"
 #include "chapter_run.hpp"
+#include "continuum_experiments.hpp"
+#include "fem_kernels.hpp"
 #include "process.hpp"
 
 using nlohmann::json;

@@ -9,10 +9,10 @@
 #include <string>
 #include <string_view>
 
-#include <kit/cloth_flags.hpp>
 #include <kit/cloth_scene_file.hpp>
 #include <kit/usage.hpp>
 
+#include "cloth_flags.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // ERRATA item 1 checked on runs (euler_gap.hpp): both Euler gaps equal k/2·Δt²·|g|, each on its side.
 #include <kit_catch.hpp>
 
-#include <kit/euler_gap.hpp>
+#include "euler_gap.hpp"
 
 namespace {
 // Gaps x_k − x̃(kΔt) of Euler loops run here: explicit (x with the old v) and implicit (v first).

@@ -6,8 +6,9 @@
 
 #include <kit/fem_element.hpp>
 #include <kit/fem_mesh.hpp>
-#include <kit/fem_output.hpp>
 #include <kit/richardson.hpp>
+
+#include "fem_output.hpp"
 
 TEST_CASE("fem element: the rest shape's Dm⁻¹ and volume; degenerate and clockwise triangles refused", "[fem]") {
   const kit::RestTriangle rest = kit::rest_triangle({1, 1}, {3, 1}, {1, 5}, 0.01);

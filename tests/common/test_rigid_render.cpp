@@ -14,11 +14,11 @@
 #include <kit/image.hpp>
 #include <kit/obj_mesh.hpp>
 #include <kit/rigid_body.hpp>
-#include <kit/rigid_output.hpp>
 #include <kit/rigid_renderer.hpp>
 #include <kit/sprite_camera.hpp>
 
 #include "process.hpp"
+#include "rigid_output.hpp"
 
 using kit::Mat3;
 using kit::Vec3;

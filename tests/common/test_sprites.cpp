@@ -12,7 +12,8 @@
 #include <kit/emitter.hpp>
 #include <kit/particle_update.hpp>
 #include <kit/measure.hpp>
-#include <kit/sprite_trade.hpp>
+
+#include "sprite_trade.hpp"
 
 namespace {
 kit::SpriteScene one_emitter_scene() {

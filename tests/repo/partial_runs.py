@@ -44,10 +44,10 @@ def write_tree(path, solved):
         target.write_text(text, encoding="utf-8")
 
 
-def build(tree, build_dir, library):
+def build(tree, build_dir, libraries):
     launcher = ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"] if shutil.which("ccache") else []
     subprocess.run(["cmake", "--preset", "release", "-B", str(build_dir), f"-DKIT_IMPL={tree}",
-                    f"-DKIT_COMMON_LIBRARY={library}", *launcher],
+                    f"-DKIT_LIBRARIES={libraries}", *launcher],
                    cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
     jobs = os.environ.get("KIT_JOBS", str(os.cpu_count() or 2))
     subprocess.run(["cmake", "--build", str(build_dir), "-j", jobs, "--target", *CHAPTERS], cwd=ROOT, check=True,
@@ -254,13 +254,13 @@ def main(argv):
         problems += check_tree("none", set(), build_dir, work / "none-figures")
     else:
         work = pathlib.Path(argv[1]).resolve()
-        library = argv[2] if len(argv) > 2 else ""  # the test build's libkit_common.a, or "" to compile one
+        libraries = argv[2] if len(argv) > 2 else ""  # the test build's lib/ folder, or "" to compile them
         points = json.loads((ROOT / "tests/grading/points.json").read_text(encoding="utf-8"))["exercises"]
         every = {e["id"] for e in points}
         for tree, solved in [("first", FIRST), ("rest", every - FIRST)]:
             source, build_dir = work / tree, work / f"{tree}-build"
             write_tree(source, solved)
-            build(source, build_dir, library)
+            build(source, build_dir, libraries)
             problems += check_tree(tree, solved, build_dir, work / f"{tree}-figures")
     for problem in problems:
         print("FAILED:", problem)

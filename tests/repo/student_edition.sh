@@ -2,14 +2,14 @@
 # The student edition holds no solution, builds, passes the tests that apply, and self-grades.
 set -euo pipefail
 kit_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-work=${1:?usage: [KIT_TEST_COMMON_LIBRARY=libkit_common.a KIT_TEST_PROGRAMS=BUILD/tests] student_edition.sh WORK_DIR}
-# The edition's common/ is the kit's own, file for file: its tree may link the kit's library
-# rather than compile it again (the edition without production code, whose common/ differs,
-# always compiles its own). When everything but exercises/ is the kit's own too, it also takes
+work=${1:?usage: [KIT_TEST_LIBRARIES=BUILD/lib KIT_TEST_PROGRAMS=BUILD/tests] student_edition.sh WORK_DIR}
+# The edition's common/ and chapters/ are the kit's own, file for file: its tree may link the kit's
+# libraries rather than compile them again (the edition without production code, whose common/
+# differs, links them only when no object of theirs read a file it leaves out). When everything but exercises/ is the kit's own too, it also takes
 # the programs no exercise goes into (judges, test_common) from the kit's build, once ninja's record
 # of what each of their compiles read shows no file of solutions/: the edition's own compiles are
 # its chapters, the ones a student's work changes.
-library=${KIT_TEST_COMMON_LIBRARY:-}
+libraries=${KIT_TEST_LIBRARIES:-}
 programs=${KIT_TEST_PROGRAMS:-}
 rm -rf "$work"
 mkdir -p "$work"
@@ -23,11 +23,11 @@ fi
 grep -q "solves some exercises another way" "$work/edition/README.md" || { echo "FAILED: the README does not say what production code gives away"; exit 1; }
 
 cd "$work/edition"
-if [ -n "$library" ] && diff -rq "$kit_root/common" common >/dev/null; then
-  shared=("-DKIT_COMMON_LIBRARY=$library")
+if [ -n "$libraries" ] && diff -rq "$kit_root/common" common >/dev/null &&
+   diff -rq -x __pycache__ "$kit_root/chapters" chapters >/dev/null; then
+  shared=("-DKIT_LIBRARIES=$libraries")
   if [ -n "$programs" ] && diff -q "$kit_root/CMakeLists.txt" CMakeLists.txt >/dev/null &&
-     diff -rq -x __pycache__ "$kit_root/cmake" cmake >/dev/null && diff -rq -x __pycache__ "$kit_root/tests" tests >/dev/null &&
-     diff -rq -x __pycache__ "$kit_root/chapters" chapters >/dev/null; then
+     diff -rq -x __pycache__ "$kit_root/cmake" cmake >/dev/null && diff -rq -x __pycache__ "$kit_root/tests" tests >/dev/null; then
     read_solutions=$(ninja -C "$(dirname "$programs")" -t deps | awk '/^[^ ]/ { object = $1 } /^ / { print object, $1 }' |
       grep -E "^tests/CMakeFiles/(test_common|grade_ex[0-9_]+|kit_remote_student|replay_[a-z]+_scene|kit_test_pch|kit_catch_main|kit_remote_judge)[.]dir/" |
       grep -E "/(solutions|exercises)/" || true)
@@ -75,18 +75,22 @@ for file in common/include/kit/dopri5.hpp common/include/kit/pi_step_control.hpp
 done
 grep -q "runs on your own ex 4.2 and ex 4.3" "$work/bare/README.md" || { echo "FAILED: its README does not say so"; exit 1; }
 cd "$work/bare"
-# Its common/ is the kit's less the production headers. When no preprocessor line left in it names
-# one of them (an #include, a __has_include, a #define), no source of the library can include one,
-# and its library is the kit's: the tree links that.
+# Its common/ is the kit's less the production headers, its chapters/ the kit's. When no
+# preprocessor line left in common/ names one of them (an #include, a __has_include, a #define), no
+# source of kit_common can include one; when ninja's record shows no object of the kit's
+# kit_lessons read one, neither does a lesson: its libraries are the kit's, and the tree links those.
 bare_library=""
-if [ -n "$library" ]; then
+if [ -n "$libraries" ]; then
   differences=$(diff -rq "$kit_root/common" common || true)
   removed=$(sed -n "s|^Only in $kit_root/common[^:]*: ||p" <<<"$differences")
   others=$(grep -v "^Only in $kit_root/common" <<<"$differences" || true)
   named=$(printf '%s\n' $removed | sed 's/[.]/[.]/g' | paste -sd'|')
-  if [ -n "$removed" ] && [ -z "$others" ] && ! grep -rqE "^[[:space:]]*#.*($named)" common; then
-    echo "the edition without production code links the kit's library: it leaves out only" $removed
-    cmake --preset release -B build "-DKIT_COMMON_LIBRARY=$library" >/dev/null
+  lessons_read=$(ninja -C "$(dirname "$libraries")" -t deps | awk '/^[^ ]/ { object = $1 } /^ / { print object, $1 }' |
+    grep "^chapters/CMakeFiles/kit_lessons[.]dir/" | grep -E "/kit/($named)\$" || true)
+  if [ -n "$removed" ] && [ -z "$others" ] && ! grep -rqE "^[[:space:]]*#.*($named)" common && [ -z "$lessons_read" ] &&
+     diff -rq -x __pycache__ "$kit_root/chapters" chapters >/dev/null; then
+    echo "the edition without production code links the kit's libraries: it leaves out only" $removed
+    cmake --preset release -B build "-DKIT_LIBRARIES=$libraries" >/dev/null
     bare_library=yes
   fi
 fi

@@ -1,7 +1,9 @@
 #pragma once
 // Figures: for each one, the data (name.dat), the gnuplot script that draws it (name.gp,
 // restylable without rerunning anything) and its renders (PDF for slides, PNG, SVG on request).
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <deque>
 #include <filesystem>
 #include <optional>
@@ -93,6 +95,9 @@ inline constexpr std::size_t max_plotted_points = 4000;
 std::vector<std::size_t> plotted_indices(const Series& s);
 /// What a log axis can show: gnuplot's autoscaled ends underflow to 0 near 1e-308.
 inline constexpr double log_axis_min = 1e-280, log_axis_max = 1e280;
+/// |v| floored at 1e-17, below round-off of any O(1) quantity: an exact zero (no ghost force, an
+/// exactly conserved invariant) still shows on a log axis, at the bottom.
+inline double magnitude_on_log_axis(double v) { return std::max(std::abs(v), 1e-17); }
 /// True when `s` has a point gnuplot can draw: finite, and in [log_axis_min, log_axis_max] on a
 /// log axis.
 bool drawable(const Series& s, bool logx, bool logy);
