@@ -6,8 +6,8 @@
 // negative when the spring is compressed (l < L0). There it makes the implicit matrix
 // indefinite, so the usual remedy clamps (1 − L0/l) to max(0, 1 − L0/l). The other blocks follow:
 // ∂f_a/∂x_b = ∂f_b/∂x_a = −∂f_a/∂x_a and ∂f_b/∂x_b = ∂f_a/∂x_a.
-#include <kit/cloth_implicit_kernels.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/cloth/cloth_implicit_kernels.hpp>
 
 namespace kit {
 

@@ -6,9 +6,9 @@
 //   - friction (Coulomb): the tangential velocity loses μ times the normal speed removed,
 //     |Δv_t| = min(|v_t|, μ |v·n|); it stops when that is all of it (static friction).
 // A node already outside, or moving outward, keeps its velocity.
-#include <kit/cloth.hpp>
-#include <kit/cloth_scene.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/cloth/cloth.hpp>
+#include <kit/cloth/cloth_scene.hpp>
 
 namespace kit {
 

@@ -4,8 +4,8 @@
 // Hooke's law along the spring, plus damping of the rate at which its length changes: only the
 // relative velocity ALONG the spring is damped, so a sheet falling as a whole is not slowed. The
 // force on b is −F_a (Newton's third law).
-#include <kit/cloth.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/cloth/cloth.hpp>
 
 namespace kit {
 

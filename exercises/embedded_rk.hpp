@@ -5,9 +5,9 @@
 // stages: one step, not two (ERRATA item 11).
 #include <vector>
 
-#include <kit/butcher_tableau.hpp>
-#include <kit/embedded_step.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/ode/butcher_tableau.hpp>
+#include <kit/ode/embedded_step.hpp>
 
 namespace kit {
 

@@ -3,8 +3,8 @@
 //  - the direct loop on any right-hand side ("Résolution numérique directe");
 //  - the matrix form for u' = A u + b ("Résolution explicite").
 // Order 1: local (one-step) error O(Δt²), global error at a fixed time O(Δt) (ERRATA item 2).
-#include <kit/affine_system.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/problems/affine_system.hpp>
 
 namespace kit {
 

@@ -8,8 +8,8 @@
 //   f0 = −(f1 + f2)             (no net force: a translation stores no energy)
 // with V the rest volume. This exercise computes E from F itself (one line), so that it can be
 // graded without ex 9.1.
-#include <kit/fem_element.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/fem/fem_element.hpp>
 
 namespace kit {
 

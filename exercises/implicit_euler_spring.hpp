@@ -2,8 +2,8 @@
 // Implicit Euler on the damped spring, solved by hand (lecture, "Euler implicite"):
 //   x_{k+1} = x_k + Δt v_{k+1},   v_{k+1} = v_k + Δt (K (L0 − x_{k+1}) − μ v_{k+1}) / m.
 // No matrix is formed: eliminating x_{k+1} leaves one division.
-#include <kit/not_implemented.hpp>
-#include <kit/spring.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/problems/spring.hpp>
 
 namespace kit {
 

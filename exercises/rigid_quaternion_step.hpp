@@ -4,8 +4,8 @@
 // four numbers instead of nine and one constraint, |q| = 1, instead of six. One explicit Euler
 // step of it, then q / |q|: the step leaves the unit sphere by O(h²) and the division brings it
 // back, so q stays a rotation whatever h (its error in the motion is still first order).
-#include <kit/not_implemented.hpp>
-#include <kit/rigid_body.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/rigid/rigid_body.hpp>
 
 namespace kit {
 

@@ -5,8 +5,8 @@
 //   R_{k+1} = R_k + h ω* R_k,
 // leaves the rotations: RᵀR becomes RᵀR + h² Rᵀ(ω*)ᵀω* R (ω* is antisymmetric, so the first-order
 // terms cancel), so R stretches and shears a little more every step (chapter 8).
-#include <kit/not_implemented.hpp>
-#include <kit/rigid_body.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/rigid/rigid_body.hpp>
 
 namespace kit {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The classical fourth-order Runge–Kutta method: four evaluations of f per step, global error
 // O(Δt⁴). Its stability region reaches the imaginary axis up to |z| = 2√2 ≈ 2.83.
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
 
 namespace kit {
 

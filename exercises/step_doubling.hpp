@@ -15,8 +15,8 @@
 
 #include <fmt/format.h>
 
-#include <kit/adaptive_run.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/ode/adaptive_run.hpp>
 
 namespace kit {
 

@@ -3,8 +3,8 @@
 //   v_{k+1} = v_k + Δt a(t_k, x_k, v_k),   x_{k+1} = x_k + Δt v_{k+1}   (the NEW velocity).
 // Explicit Euler would use v_k in the second line. On an undamped spring this one small change
 // keeps the energy bounded for every Δt < 2/ω, where explicit Euler grows for every Δt.
-#include <kit/not_implemented.hpp>
-#include <kit/state.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/base/state.hpp>
 
 namespace kit {
 

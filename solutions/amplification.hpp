@@ -5,8 +5,8 @@
 #include <complex>
 #include <stdexcept>
 
-#include <kit/not_implemented.hpp>
-#include <kit/scheme.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/ode/scheme.hpp>
 
 namespace kit {
 

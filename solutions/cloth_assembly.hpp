@@ -11,8 +11,8 @@
 // Build A from a list of triplets, the straightforward way (duplicates are summed).
 #include <vector>
 
-#include <kit/cloth_implicit_kernels.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/cloth/cloth_implicit_kernels.hpp>
 
 namespace kit {
 

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <vector>
 
-#include <kit/cloth_implicit_kernels.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/cloth/cloth_implicit_kernels.hpp>
 
 namespace kit {
 

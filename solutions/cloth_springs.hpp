@@ -7,8 +7,8 @@
 //               and with BendLayout::eight also (i+2, j+2) and (i+2, j−2)  (ERRATA item 12).
 // Each family exists only when the layout asks for it; each spring rests at the distance between
 // its nodes at rest.
-#include <kit/cloth.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/cloth/cloth.hpp>
 
 namespace kit {
 

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include <kit/cloth.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/cloth/cloth.hpp>
 
 namespace kit {
 

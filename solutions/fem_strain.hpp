@@ -6,8 +6,8 @@
 // and Green's strain measures how F changes lengths, whatever way it turns the element:
 //   E = ½(FᵀF − I)                (2×2, dimensionless; the lecture's ½(∇u + ∇uᵀ + ∇uᵀ∇u), ∇u = F − I)
 // A rigid motion has FᵀF = I, so E = 0; a stretch by a along the rest x axis has E_xx = (a² − 1)/2.
-#include <kit/fem_element.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/fem/fem_element.hpp>
 
 namespace kit {
 

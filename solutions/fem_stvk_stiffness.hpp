@@ -7,8 +7,8 @@
 //   dP = dF S + F dS,               dH = −V dP Dm⁻ᵀ,   df0 = −(dh1 + dh2).
 // Moving coordinate k of node a gives column 3a + k. The result is symmetric (the forces are an
 // energy's gradient) and sends every rigid translation to zero.
-#include <kit/fem_element.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/fem/fem_element.hpp>
 
 namespace kit {
 

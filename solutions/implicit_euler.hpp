@@ -6,8 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include <kit/affine_system.hpp>
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/problems/affine_system.hpp>
 
 namespace kit {
 

@@ -3,7 +3,7 @@
 //   u_{k+1/2} = u_k + Δt/2 · F(t_k, u_k),   u_{k+1} = u_k + Δt · F(t_k + Δt/2, u_{k+1/2}).
 // Two evaluations of F per step; second order. On free fall it is exact (lecture:
 // x^k = x0 + kΔt v0 + (kΔt)²/2 g).
-#include <kit/not_implemented.hpp>
+#include <kit/base/not_implemented.hpp>
 
 namespace kit {
 

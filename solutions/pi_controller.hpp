@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <kit/not_implemented.hpp>
-#include <kit/pi_law.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/ode/pi_law.hpp>
 
 namespace kit {
 

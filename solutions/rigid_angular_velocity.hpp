@@ -4,8 +4,8 @@
 // three matrix-vector products and no inverse at run time (I_body⁻¹ is computed once per shape).
 // Rᵀ is R's inverse only while R is a rotation: with an R that has drifted (explicit Euler on R)
 // this is what the lecture's formula reads, and part of why that integrator goes wrong.
-#include <kit/not_implemented.hpp>
-#include <kit/rigid_body.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/rigid/rigid_body.hpp>
 
 namespace kit {
 

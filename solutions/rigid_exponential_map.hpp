@@ -6,8 +6,8 @@
 // A product of rotations is a rotation: R stays on SO(3) to round-off, at any h.
 #include <cmath>
 
-#include <kit/not_implemented.hpp>
-#include <kit/rigid_body.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/rigid/rigid_body.hpp>
 
 namespace kit {
 

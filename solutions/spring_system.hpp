@@ -1,8 +1,8 @@
 #pragma once
 // The spring of the lecture ("Masses ressorts") as a first-order system u' = A u + b.
-#include <kit/affine_system.hpp>
-#include <kit/not_implemented.hpp>
-#include <kit/spring.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/problems/affine_system.hpp>
+#include <kit/problems/spring.hpp>
 
 namespace kit {
 

@@ -6,10 +6,10 @@
 #include <cstddef>
 #include <vector>
 
-#include <kit/not_implemented.hpp>
-#include <kit/particle_update.hpp>
-#include <kit/particles.hpp>
-#include <kit/sprite_scene.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/sprites/particle_update.hpp>
+#include <kit/sprites/particles.hpp>
+#include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
 

@@ -1,15 +1,15 @@
 #pragma once
 // Ex 5.1: one new particle of an emitter (Reeves 1983, §2.2). Every attribute is drawn as
 //   mean + rand·variance,  rand uniform in [−1, 1)   (random.symmetric(), or kit::draw),
-// its position and direction by the emitter's shape (the geometry is in kit/emitter.hpp).
+// its position and direction by the emitter's shape (the geometry is in kit/sprites/emitter.hpp).
 #include <algorithm>
 #include <cstdint>
 
-#include <kit/emitter.hpp>
-#include <kit/not_implemented.hpp>
-#include <kit/particles.hpp>
-#include <kit/sprite_random.hpp>
-#include <kit/sprite_scene.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/sprites/emitter.hpp>
+#include <kit/sprites/particles.hpp>
+#include <kit/sprites/sprite_random.hpp>
+#include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
 

@@ -3,9 +3,9 @@
 // (non-premultiplied) colour c with opacity α at each of its pixels; the image is opaque, so
 //   dst ← α·c + (1 − α)·dst   for each of r, g, b.
 // A sprite near the border of the frame hangs over it: only its pixels inside the image count.
-#include <kit/image.hpp>
-#include <kit/not_implemented.hpp>
-#include <kit/sprite_tile.hpp>
+#include <kit/base/not_implemented.hpp>
+#include <kit/render/image.hpp>
+#include <kit/sprites/sprite_tile.hpp>
 
 namespace kit {
 

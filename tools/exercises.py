@@ -42,7 +42,9 @@ that needs it stops with that message instead of printing wrong numbers.
 
 `./kit grade` compiles each file on its own, against the standard library, Eigen, {fmt} and
 only the kit headers its exercises may use (`tests/grading/points.json`); nothing else of the
-kit is there to include or call. Each file may include:
+kit is there to include or call. (A copy made before the library took its folders includes the
+old paths, `<kit/state.hpp>` for `<kit/base/state.hpp>`: those still work for this release.)
+Each file may include:
 """
 
 
@@ -53,7 +55,9 @@ def readme(solutions):
     for e in json.loads(points.read_text(encoding="utf-8"))["exercises"] if points.exists() else []:
         ids, headers = rows.setdefault(e["file"], ([], set()))
         ids.append(e["id"])
-        headers.update(h for h in e["headers"] if h != "kit/not_implemented.hpp")
+        # The placeholder's header, and the old paths kept one release (kit/NAME.hpp forwards to
+        # kit/LAYER/NAME.hpp), go without saying.
+        headers.update(h for h in e["headers"] if h != "kit/base/not_implemented.hpp" and h.count("/") == 2)
     table = ["", "| file | exercises | kit headers |", "|---|---|---|"]
     table += [f"| `{name}` | {', '.join(ids)} | {', '.join(f'`<{h}>`' for h in sorted(headers)) or 'none'} |"
               for name, (ids, headers) in sorted(rows.items())]

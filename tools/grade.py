@@ -82,6 +82,12 @@ def stem_of(exercise):
     return exercise["file"].removesuffix(".hpp")
 
 
+def object_name(source):
+    """The object of a library source (points.json "sources", a path under common/src) in
+    libkit_common.a, which keeps the file's name alone: cloth/cloth.cpp -> cloth.cpp.o."""
+    return pathlib.PurePosixPath(source).name + ".o"
+
+
 def died_of(code, sig):
     """Whether a run ended by `sig`: bare, a negative return code; under bwrap, 128 + the signal."""
     return code is not None and code in (-sig, 128 + sig)
@@ -145,7 +151,9 @@ class Batch:
         self.allowed = {}
         objects_dir = self.shared / "objects"
         objects_dir.mkdir()
-        wanted = sorted({s + ".o" for e in points["exercises"] for s in e.get("sources", [])})
+        # A source is named by its path under common/src ("cloth/cloth.cpp"); the archive keeps
+        # its object under the file's name alone.
+        wanted = sorted({object_name(s) for e in points["exercises"] for s in e.get("sources", [])})
         if wanted:
             subprocess.run(["ar", "x", str(pathlib.Path(library).resolve()), *wanted], cwd=objects_dir, check=True)
             missing = [name for name in wanted if not (objects_dir / name).is_file()]
@@ -161,7 +169,7 @@ class Batch:
             for header in exercise["headers"]:
                 (folder / header).parent.mkdir(parents=True, exist_ok=True)
                 shutil.copy2(include / header, folder / header)
-            self.allowed[stem] = (folder, [objects_dir / (s + ".o") for s in exercise.get("sources", [])])
+            self.allowed[stem] = (folder, [objects_dir / object_name(s) for s in exercise.get("sources", [])])
         # The standard library and Eigen, precompiled here from the kit's header alone: half a compile.
         self.pch = self.harness / "remote" / "student_pch.hpp"
         made = subprocess.run(["c++", *COMPILE_FLAGS, "-isystem", "/usr/include/eigen3", "-x", "c++-header",

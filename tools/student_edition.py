@@ -8,7 +8,7 @@ the default implementation, `./kit run`, `./kit test` (the tests that apply with
 and `./kit grade MYCOPY` work in it. The kit's own production code solves some exercises in
 another form (PRODUCTION below, listed in the edition's README). With --without-production the
 edition leaves those files out: chapter 4's DOPRI5 then runs on the student's own ex 4.2 and
-ex 4.3 (chapters/shared/adaptive_rk_methods.hpp), and the tests and benchmark of the production
+ex 4.3 (chapters/04-adaptive-rk/adaptive_rk_methods.hpp), and the tests and benchmark of the production
 DOPRI5 are not built.
 
 `check` mode (used by the test): student_edition.py check KIT_ROOT EDITION
@@ -26,9 +26,9 @@ import exercises  # noqa: E402
 
 # Production code in common/ that solves an exercise another way: what it gives away.
 PRODUCTION = {
-    "common/include/kit/dopri5.hpp": "ex 4.2 for one tableau (the Dormand-Prince stages), and ex 4.3 in use",
-    "common/include/kit/pi_step_control.hpp": "ex 4.3, the PI step-size law, in a latency-conscious form",
-    "common/include/kit/dopri5_work_method.hpp": "the production DOPRI5 in the work-precision harness",
+    "common/include/kit/ode/dopri5.hpp": "ex 4.2 for one tableau (the Dormand-Prince stages), and ex 4.3 in use",
+    "common/include/kit/ode/pi_step_control.hpp": "ex 4.3, the PI step-size law, in a latency-conscious form",
+    "common/include/kit/ode/dopri5_work_method.hpp": "the production DOPRI5 in the work-precision harness",
     "tests/common/test_dopri5.cpp": "ex 4.3: dopri5.f's step-size formula written out",
     "tests/bench/bench_adaptive.cpp": "the benchmark of the production DOPRI5",
 }

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <kit/measure.hpp>
+#include <kit/base/measure.hpp>
 
 namespace kit {
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include <kit/free_fall.hpp>
+#include <kit/problems/free_fall.hpp>
 
 namespace kit {
 

@@ -1,19 +1,19 @@
 #pragma once
 // Chapter 1's runs of the Euler methods (ex 1.1–1.3) on free fall: the lecture's loop, both
 // matrix forms, and the errors its order and round-off sweeps measure. Not an exercise: it only
-// wires the selected methods to the free-fall model (kit/free_fall.hpp).
+// wires the selected methods to the free-fall model (kit/problems/free_fall.hpp).
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
 
-#include <kit/fixed_steps.hpp>
-#include <kit/free_fall.hpp>
-#include <kit/measure.hpp>
-#include <kit/reference_solver.hpp>
-#include <kit/report.hpp>
-#include <kit/step_budget.hpp>
-#include <kit/stopwatch.hpp>
+#include <kit/app/report.hpp>
+#include <kit/base/measure.hpp>
+#include <kit/base/stopwatch.hpp>
+#include <kit/ode/fixed_steps.hpp>
+#include <kit/ode/reference_solver.hpp>
+#include <kit/ode/step_budget.hpp>
+#include <kit/problems/free_fall.hpp>
 
 #include "explicit_euler.hpp"
 #include "implicit_euler.hpp"

@@ -11,9 +11,9 @@
 
 #include <fmt/format.h>
 
-#include <kit/figure.hpp>
-#include <kit/power_law.hpp>
-#include <kit/trajectory_error.hpp>
+#include <kit/app/figure.hpp>
+#include <kit/ode/power_law.hpp>
+#include <kit/ode/trajectory_error.hpp>
 
 #include "free_fall_euler.hpp"
 

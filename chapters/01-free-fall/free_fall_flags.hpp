@@ -1,7 +1,7 @@
 #pragma once
 // Chapter 1's command-line flags for free fall, and the limits they must meet together.
-#include <kit/chapter_app.hpp>
-#include <kit/free_fall.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/problems/free_fall.hpp>
 
 namespace kit {
 

@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include <kit/figure.hpp>
-#include <kit/spring.hpp>
+#include <kit/app/figure.hpp>
+#include <kit/problems/spring.hpp>
 
 #include "spring_stability.hpp"
 

@@ -2,7 +2,7 @@
 // Chapter 2's measurements of the schemes (ex 2.1–2.4, 3.x) on the spring: runs at a step Δt,
 // spectral radii, critical steps found by bisection, implicit Euler's damping, and the stability
 // map over (ω·Δt, ζ). Not an exercise: it only wires the selected methods to the kit's
-// stability tools (kit/stability.hpp). ERRATA items 4–7.
+// stability tools (kit/ode/stability.hpp). ERRATA items 4–7.
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -12,10 +12,10 @@
 #include <tuple>
 #include <vector>
 
-#include <kit/fixed_steps.hpp>
-#include <kit/reference_solver.hpp>
-#include <kit/report.hpp>
-#include <kit/stability.hpp>
+#include <kit/app/report.hpp>
+#include <kit/ode/fixed_steps.hpp>
+#include <kit/ode/reference_solver.hpp>
+#include <kit/ode/stability.hpp>
 
 #include "amplification.hpp"
 #include "spring_steppers.hpp"

@@ -9,12 +9,12 @@
 
 #include <fmt/format.h>
 
-#include <kit/chapter_app.hpp>
-#include <kit/convergence_sweep.hpp>
-#include <kit/energy_drift.hpp>
-#include <kit/fixed_steps.hpp>
-#include <kit/free_fall.hpp>
-#include <kit/spring.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/ode/convergence_sweep.hpp>
+#include <kit/ode/energy_drift.hpp>
+#include <kit/ode/fixed_steps.hpp>
+#include <kit/problems/free_fall.hpp>
+#include <kit/problems/spring.hpp>
 
 #include "explicit_euler.hpp"
 #include "midpoint.hpp"

@@ -4,10 +4,10 @@
 #include <map>
 #include <vector>
 
-#include <kit/convergence_sweep.hpp>
-#include <kit/energy_drift.hpp>
-#include <kit/figure.hpp>
-#include <kit/scheme.hpp>
+#include <kit/app/figure.hpp>
+#include <kit/ode/convergence_sweep.hpp>
+#include <kit/ode/energy_drift.hpp>
+#include <kit/ode/scheme.hpp>
 
 namespace kit {
 

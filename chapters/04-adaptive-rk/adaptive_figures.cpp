@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <kit/look.hpp>
+#include <kit/app/look.hpp>
 
 namespace kit {
 

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include <kit/adaptive_run.hpp>
-#include <kit/figure.hpp>
-#include <kit/orbit_problem.hpp>
-#include <kit/van_der_pol_stiffness.hpp>
-#include <kit/work_precision.hpp>
+#include <kit/app/figure.hpp>
+#include <kit/ode/adaptive_run.hpp>
+#include <kit/ode/work_precision.hpp>
+#include <kit/problems/orbit_problem.hpp>
+#include <kit/problems/van_der_pol_stiffness.hpp>
 
 namespace kit {
 

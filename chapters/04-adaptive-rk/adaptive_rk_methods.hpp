@@ -2,27 +2,27 @@
 // Chapter 4's methods that run the student's code: the general embedded driver with ex 4.2's
 // step and ex 4.3's law, the lecture's step doubling (ex 4.1) over explicit Euler or midpoint
 // RK2 (ex 3.1), and fixed-step RK4 (ex 3.2), as runs and as WorkMethod for the work-precision
-// harness (kit/work_precision.hpp). Not an exercise: it only wires the student's files to the
-// kit; the kit's own DOPRI5 and the peers are in kit/work_precision_methods.hpp.
+// harness (kit/ode/work_precision.hpp). Not an exercise: it only wires the student's files to the
+// kit; the kit's own DOPRI5 and the peers are in kit/ode/work_precision_methods.hpp.
 #include <string>
 #include <utility>
 #include <vector>
 
-#include <kit/adaptive_run.hpp>
-#include <kit/butcher_tableau.hpp>
-#include <kit/embedded_run.hpp>
-#include <kit/look.hpp>
-#include <kit/progress.hpp>
-#include <kit/van_der_pol_stiffness.hpp>
-#include <kit/report.hpp>
-#include <kit/work_precision.hpp>
-#include <kit/work_precision_methods.hpp>
+#include <kit/app/look.hpp>
+#include <kit/app/report.hpp>
+#include <kit/base/progress.hpp>
+#include <kit/ode/adaptive_run.hpp>
+#include <kit/ode/butcher_tableau.hpp>
+#include <kit/ode/embedded_run.hpp>
+#include <kit/ode/work_precision.hpp>
+#include <kit/ode/work_precision_methods.hpp>
+#include <kit/problems/van_der_pol_stiffness.hpp>
 
 // The kit's production DOPRI5, unless this is a student edition without production code: then
 // chapter 4's DOPRI5 is the student's own (ex 4.2 on the Dormand–Prince tableau, ex 4.3's PI law).
-#if __has_include(<kit/dopri5.hpp>)
-#include <kit/dopri5.hpp>
-#include <kit/dopri5_work_method.hpp>
+#if __has_include(<kit/ode/dopri5.hpp>)
+#include <kit/ode/dopri5.hpp>
+#include <kit/ode/dopri5_work_method.hpp>
 #define KIT_PRODUCTION_DOPRI5 1
 #else
 #define KIT_PRODUCTION_DOPRI5 0

@@ -9,12 +9,12 @@
 
 #include <fmt/format.h>
 
-#include <kit/butcher_tableau.hpp>
-#include <kit/chapter_app.hpp>
-#include <kit/orbit_problem.hpp>
-#include <kit/run_fields.hpp>
-#include <kit/van_der_pol_stiffness.hpp>
-#include <kit/work_precision.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/ode/butcher_tableau.hpp>
+#include <kit/ode/run_fields.hpp>
+#include <kit/ode/work_precision.hpp>
+#include <kit/problems/orbit_problem.hpp>
+#include <kit/problems/van_der_pol_stiffness.hpp>
 
 #include "adaptive_figures.hpp"
 #include "adaptive_rk_methods.hpp"

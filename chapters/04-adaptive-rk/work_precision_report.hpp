@@ -7,8 +7,8 @@
 #include <string_view>
 #include <vector>
 
-#include <kit/report.hpp>
-#include <kit/work_precision.hpp>
+#include <kit/app/report.hpp>
+#include <kit/ode/work_precision.hpp>
 
 namespace kit {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <kit/sprite_system.hpp>
+#include <kit/sprites/sprite_system.hpp>
 
 namespace kit {
 

@@ -8,9 +8,9 @@
 
 #include <fmt/format.h>
 
-#include <kit/animation.hpp>
-#include <kit/chapter_app.hpp>
-#include <kit/measure.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/base/measure.hpp>
+#include <kit/render/animation.hpp>
 
 #include "emission_check.hpp"
 #include "sprite_figures.hpp"

@@ -5,9 +5,9 @@
 #include <map>
 #include <vector>
 
-#include <kit/figure.hpp>
-#include <kit/sprite_camera.hpp>
-#include <kit/sprite_run.hpp>
+#include <kit/app/figure.hpp>
+#include <kit/render/sprite_camera.hpp>
+#include <kit/sprites/sprite_run.hpp>
 
 #include "sprite_trade.hpp"
 

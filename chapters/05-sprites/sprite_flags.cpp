@@ -6,10 +6,10 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include <kit/sprite_scene_file.hpp>
-#include <kit/sprite_texture.hpp>
-#include <kit/scene_flag.hpp>
-#include <kit/usage.hpp>
+#include <kit/app/scene_flag.hpp>
+#include <kit/base/usage.hpp>
+#include <kit/sprites/sprite_scene_file.hpp>
+#include <kit/sprites/sprite_texture.hpp>
 
 namespace kit {
 namespace {

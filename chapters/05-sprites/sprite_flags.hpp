@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <string>
 
-#include <kit/chapter_app.hpp>
-#include <kit/run_estimate.hpp>
-#include <kit/sprite_run.hpp>
-#include <kit/sprite_scene.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/base/run_estimate.hpp>
+#include <kit/sprites/sprite_run.hpp>
+#include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
 

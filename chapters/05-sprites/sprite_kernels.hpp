@@ -1,10 +1,10 @@
 #pragma once
 // Chapter 5's wiring of the student's exercises into the kit's sprite system: ex 5.1 draws each
 // new particle, ex 5.2 ages and kills, ex 5.3 composites "over" sprites. Not an exercise.
-#include <kit/image.hpp>
-#include <kit/report.hpp>
-#include <kit/sprite_renderer.hpp>
-#include <kit/sprite_system.hpp>
+#include <kit/app/report.hpp>
+#include <kit/render/image.hpp>
+#include <kit/sprites/sprite_renderer.hpp>
+#include <kit/sprites/sprite_system.hpp>
 
 #include "sprite_age_kill.hpp"
 #include "sprite_emit.hpp"

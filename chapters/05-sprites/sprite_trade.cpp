@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <kit/drag_motion.hpp>
+#include <kit/sprites/drag_motion.hpp>
 
 namespace kit {
 

@@ -7,8 +7,8 @@
 // can show.
 #include <vector>
 
-#include <kit/particle_update.hpp>
-#include <kit/sprite_scene.hpp>
+#include <kit/sprites/particle_update.hpp>
+#include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
 

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include <kit/look.hpp>
-#include <kit/measure.hpp>
+#include <kit/app/look.hpp>
+#include <kit/base/measure.hpp>
 
 namespace kit {
 

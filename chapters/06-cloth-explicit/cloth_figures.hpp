@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include <kit/cloth_run.hpp>
-#include <kit/cloth_stability.hpp>
-#include <kit/figure.hpp>
+#include <kit/app/figure.hpp>
+#include <kit/cloth/cloth_run.hpp>
+#include <kit/cloth/cloth_stability.hpp>
 
 #include "cloth_mesh_dependence.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/cloth_stability.hpp>
+#include <kit/cloth/cloth_stability.hpp>
 
 namespace kit {
 

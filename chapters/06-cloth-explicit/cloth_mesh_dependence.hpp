@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include <kit/cloth_system.hpp>
-#include <kit/richardson.hpp>
+#include <kit/cloth/cloth_system.hpp>
+#include <kit/ode/richardson.hpp>
 
 namespace kit {
 

@@ -3,9 +3,9 @@
 #include <map>
 #include <vector>
 
-#include <kit/cloth_run.hpp>
-#include <kit/cloth_stability.hpp>
-#include <kit/report.hpp>
+#include <kit/app/report.hpp>
+#include <kit/cloth/cloth_run.hpp>
+#include <kit/cloth/cloth_stability.hpp>
 
 #include "cloth_mesh_dependence.hpp"
 

@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include <kit/chapter_app.hpp>
-#include <kit/spring_force_check.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/cloth/spring_force_check.hpp>
 
 #include "cloth_figures.hpp"
 #include "cloth_flags.hpp"

@@ -7,9 +7,9 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
-#include <kit/cloth_stability.hpp>
-#include <kit/sprite_random.hpp>
-#include <kit/stopwatch.hpp>
+#include <kit/base/stopwatch.hpp>
+#include <kit/cloth/cloth_stability.hpp>
+#include <kit/sprites/sprite_random.hpp>
 
 namespace kit {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include <kit/cloth_run.hpp>
-#include <kit/cloth_stability.hpp>
+#include <kit/cloth/cloth_run.hpp>
+#include <kit/cloth/cloth_stability.hpp>
 
 namespace kit {
 

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/look.hpp>
+#include <kit/app/look.hpp>
 
 namespace kit {
 

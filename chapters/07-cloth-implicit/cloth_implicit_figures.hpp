@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include <kit/figure.hpp>
+#include <kit/app/figure.hpp>
 
 #include "cloth_implicit_experiments.hpp"
 

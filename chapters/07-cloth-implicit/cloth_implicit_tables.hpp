@@ -2,7 +2,7 @@
 // Chapter 7's tables: each prints its rows and stores them in the --json summary.
 #include <vector>
 
-#include <kit/report.hpp>
+#include <kit/app/report.hpp>
 
 #include "cloth_implicit_experiments.hpp"
 

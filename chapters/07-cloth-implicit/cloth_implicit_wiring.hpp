@@ -2,7 +2,7 @@
 // Chapter 7's wiring of the student's exercises into the kit's implicit cloth: ex 7.1 the
 // spring's stiffness block, ex 7.2 the assembly the kit checks its own against, ex 7.3 the
 // filtered PCG of --solver pcg. Not an exercise.
-#include <kit/cloth_implicit_kernels.hpp>
+#include <kit/cloth/cloth_implicit_kernels.hpp>
 
 #include "cloth_assembly.hpp"
 #include "cloth_jacobian.hpp"

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/chapter_app.hpp>
+#include <kit/app/chapter_app.hpp>
 
 #include "cloth_implicit_figures.hpp"
 #include "cloth_implicit_flags.hpp"

@@ -7,10 +7,10 @@
 
 #include <fmt/format.h>
 
-#include <kit/chapter_app.hpp>
-#include <kit/run_estimate.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/base/run_estimate.hpp>
 
-#include <kit/rigid_renderer.hpp>
+#include <kit/rigid/rigid_renderer.hpp>
 
 #include "rigid_figures.hpp"
 #include "rigid_flags.hpp"

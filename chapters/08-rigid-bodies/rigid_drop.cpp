@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <kit/progress.hpp>
-#include <kit/rigid_integrators.hpp>
+#include <kit/base/progress.hpp>
+#include <kit/rigid/rigid_integrators.hpp>
 
 namespace kit {
 

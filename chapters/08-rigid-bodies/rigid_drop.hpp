@@ -3,8 +3,8 @@
 // impulses of rigid_contact.hpp, with its height and energy over time.
 #include <vector>
 
-#include <kit/rigid_contact.hpp>
-#include <kit/rigid_stepper.hpp>
+#include <kit/rigid/rigid_contact.hpp>
+#include <kit/rigid/rigid_stepper.hpp>
 
 namespace kit {
 

@@ -6,9 +6,9 @@
 #include <limits>
 #include <numeric>
 
-#include <kit/progress.hpp>
-#include <kit/rigid_free_rotation.hpp>
-#include <kit/rigid_reference.hpp>
+#include <kit/base/progress.hpp>
+#include <kit/rigid/rigid_free_rotation.hpp>
+#include <kit/rigid/rigid_reference.hpp>
 
 namespace kit {
 namespace {

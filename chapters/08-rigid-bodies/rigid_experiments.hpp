@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include <kit/rigid_stepper.hpp>
+#include <kit/rigid/rigid_stepper.hpp>
 
 namespace kit {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include <kit/figure.hpp>
+#include <kit/app/figure.hpp>
 
 #include "rigid_drop.hpp"
 #include "rigid_experiments.hpp"

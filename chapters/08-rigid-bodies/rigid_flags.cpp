@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <kit/usage.hpp>
+#include <kit/base/usage.hpp>
 
 namespace kit {
 namespace {

@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include <kit/chapter_app.hpp>
-#include <kit/rigid_contact.hpp>
-#include <kit/run_estimate.hpp>
-#include <kit/rigid_stepper.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/base/run_estimate.hpp>
+#include <kit/rigid/rigid_contact.hpp>
+#include <kit/rigid/rigid_stepper.hpp>
 
 namespace kit {
 

@@ -3,7 +3,7 @@
 // (rigid_stepper.hpp): ex 8.1 the explicit step on R, ex 8.2 the quaternion step, ex 8.3 ω from
 // L, ex 8.4 the exponential map. Not an exercise: an unwritten one throws NotImplemented when
 // an integrator calls it, and the chapter names it.
-#include <kit/rigid_stepper.hpp>
+#include <kit/rigid/rigid_stepper.hpp>
 
 #include "rigid_angular_velocity.hpp"
 #include "rigid_exponential_map.hpp"

@@ -6,10 +6,10 @@
 
 #include <fmt/format.h>
 
-#include <kit/atomic_file.hpp>
-#include <kit/frame_writer.hpp>
-#include <kit/rigid_mesh.hpp>
-#include <kit/rigid_renderer.hpp>
+#include <kit/base/atomic_file.hpp>
+#include <kit/render/frame_writer.hpp>
+#include <kit/rigid/rigid_mesh.hpp>
+#include <kit/rigid/rigid_renderer.hpp>
 
 namespace kit {
 namespace fs = std::filesystem;

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include <kit/rigid_body.hpp>
-#include <kit/sprite_scene.hpp>
+#include <kit/rigid/rigid_body.hpp>
+#include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
 

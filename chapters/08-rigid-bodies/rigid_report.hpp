@@ -4,7 +4,7 @@
 // through the report layer, so the text and the --json summary agree.
 #include <vector>
 
-#include <kit/report.hpp>
+#include <kit/app/report.hpp>
 
 #include "rigid_drop.hpp"
 #include "rigid_experiments.hpp"

@@ -7,8 +7,8 @@
 #include <Eigen/Geometry>
 #include <fmt/format.h>
 
-#include <kit/fem_material.hpp>
-#include <kit/stopwatch.hpp>
+#include <kit/base/stopwatch.hpp>
+#include <kit/fem/fem_material.hpp>
 
 namespace kit {
 

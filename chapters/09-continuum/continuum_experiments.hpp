@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include <kit/fem_body.hpp>
-#include <kit/fem_integrators.hpp>
-#include <kit/fem_statics.hpp>
-#include <kit/richardson.hpp>
+#include <kit/fem/fem_body.hpp>
+#include <kit/fem/fem_integrators.hpp>
+#include <kit/fem/fem_statics.hpp>
+#include <kit/ode/richardson.hpp>
 
 namespace kit {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <kit/figure.hpp>
+#include <kit/app/figure.hpp>
 
 #include "continuum_experiments.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/usage.hpp>
+#include <kit/base/usage.hpp>
 
 namespace kit {
 

@@ -3,8 +3,8 @@
 // spinning plate's scene run (--resolution, --mesh, --model, --integrator, --dt, --t-end, --frames).
 #include <string>
 
-#include <kit/chapter_app.hpp>
-#include <kit/run_estimate.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/base/run_estimate.hpp>
 
 #include "continuum_experiments.hpp"
 

@@ -3,7 +3,7 @@
 #include <map>
 #include <vector>
 
-#include <kit/report.hpp>
+#include <kit/app/report.hpp>
 
 #include "continuum_experiments.hpp"
 

@@ -4,7 +4,7 @@
 // the stiffness; and from earlier chapters the spring (ex 6.1), its stiffness block (ex 7.1) and
 // the filtered PCG (ex 7.3), which the springs model and the implicit step call. Not an
 // exercise: an unwritten one throws NotImplemented when the kit calls it.
-#include <kit/fem_body.hpp>
+#include <kit/fem/fem_body.hpp>
 
 #include "cloth_jacobian.hpp"
 #include "cloth_pcg.hpp"

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/atomic_file.hpp>
+#include <kit/base/atomic_file.hpp>
 
 namespace kit {
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <vector>
 
-#include <kit/fem_body.hpp>
+#include <kit/fem/fem_body.hpp>
 
 namespace kit {
 

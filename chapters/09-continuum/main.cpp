@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/chapter_app.hpp>
+#include <kit/app/chapter_app.hpp>
 
 #include "continuum_figures.hpp"
 #include "continuum_flags.hpp"

@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <kit/cloth_scene_file.hpp>
-#include <kit/scene_flag.hpp>
-#include <kit/usage.hpp>
+#include <kit/app/scene_flag.hpp>
+#include <kit/base/usage.hpp>
+#include <kit/cloth/cloth_scene_file.hpp>
 
 namespace kit {
 namespace {

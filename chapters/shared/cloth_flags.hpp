@@ -7,9 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include <kit/chapter_app.hpp>
-#include <kit/cloth_run.hpp>
-#include <kit/cloth_scene.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/cloth/cloth_run.hpp>
+#include <kit/cloth/cloth_scene.hpp>
 
 namespace kit {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Chapter 6's wiring of the student's exercises into the kit's cloth: ex 6.2 builds the springs,
 // ex 6.3 steps symplectic Euler, ex 6.4 answers sphere contacts. Not an exercise.
-#include <kit/cloth_system.hpp>
+#include <kit/cloth/cloth_system.hpp>
 
 #include "cloth_sphere.hpp"
 #include "cloth_springs.hpp"

@@ -3,9 +3,9 @@
 
 #include <fmt/format.h>
 
-#include <kit/cloth_renderer.hpp>
-#include <kit/frame_writer.hpp>
-#include <kit/obj_mesh.hpp>
+#include <kit/cloth/cloth_renderer.hpp>
+#include <kit/render/frame_writer.hpp>
+#include <kit/render/obj_mesh.hpp>
 
 namespace kit {
 namespace fs = std::filesystem;

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include <kit/animation.hpp>
-#include <kit/chapter_app.hpp>
-#include <kit/cloth_run.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/cloth/cloth_run.hpp>
+#include <kit/render/animation.hpp>
 
 #include "cloth_flags.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The spring's command-line flags, shared by the chapters that simulate it.
-#include <kit/chapter_app.hpp>
-#include <kit/spring.hpp>
+#include <kit/app/chapter_app.hpp>
+#include <kit/problems/spring.hpp>
 
 namespace kit {
 

@@ -5,9 +5,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include <kit/report.hpp>
-#include <kit/scheme.hpp>
-#include <kit/spring.hpp>
+#include <kit/app/report.hpp>
+#include <kit/ode/scheme.hpp>
+#include <kit/problems/spring.hpp>
 
 #include "explicit_euler.hpp"
 #include "implicit_euler_spring.hpp"

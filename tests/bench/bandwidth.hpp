@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include <kit/stopwatch.hpp>
+#include <kit/base/stopwatch.hpp>
 
 namespace kit_bench {
 

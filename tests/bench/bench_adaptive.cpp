@@ -1,6 +1,6 @@
 // ./kit bench adaptive: the DOPRI5 against Hairer's published counts and against GSL and
 // Boost.Odeint run in this same process, every run measured by the work-precision harness of
-// chapter 4 (kit/work_precision.hpp). Timings live here, never in the tests.
+// chapter 4 (kit/ode/work_precision.hpp). Timings live here, never in the tests.
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -9,12 +9,12 @@
 
 #include <fmt/format.h>
 
-#include <kit/adaptive_rk_models.hpp>
-#include <kit/dopri5_work_method.hpp>
-#include <kit/reference_solver.hpp>
-#include <kit/table.hpp>
-#include <kit/work_precision.hpp>
-#include <kit/work_precision_methods.hpp>
+#include <kit/app/table.hpp>
+#include <kit/ode/dopri5_work_method.hpp>
+#include <kit/ode/reference_solver.hpp>
+#include <kit/ode/work_precision.hpp>
+#include <kit/ode/work_precision_methods.hpp>
+#include <kit/problems/adaptive_rk_models.hpp>
 
 namespace {
 struct Oscillator {  // y'' = −y: the cheapest right-hand side, so the integrator's own cost shows

@@ -21,11 +21,11 @@
 
 #include <fmt/format.h>
 
-#include <kit/cloth.hpp>
-#include <kit/cloth_forces.hpp>
-#include <kit/cloth_stability.hpp>
-#include <kit/stopwatch.hpp>
-#include <kit/table.hpp>
+#include <kit/app/table.hpp>
+#include <kit/base/stopwatch.hpp>
+#include <kit/cloth/cloth.hpp>
+#include <kit/cloth/cloth_forces.hpp>
+#include <kit/cloth/cloth_stability.hpp>
 
 #include "bandwidth.hpp"
 #include "bullet_cloth.hpp"

@@ -34,17 +34,17 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <fmt/format.h>
 
-#include <kit/cloth.hpp>
-#include <kit/cloth_implicit_kernels.hpp>
-#include <kit/cloth_implicit_matrix.hpp>
-#include <kit/cloth_implicit_step.hpp>
-#include <kit/cloth_liu.hpp>
-#include <kit/cloth_multigrid.hpp>
-#include <kit/cloth_scene.hpp>
-#include <kit/cloth_stability.hpp>
-#include <kit/cloth_system.hpp>
-#include <kit/stopwatch.hpp>
-#include <kit/table.hpp>
+#include <kit/app/table.hpp>
+#include <kit/base/stopwatch.hpp>
+#include <kit/cloth/cloth.hpp>
+#include <kit/cloth/cloth_implicit_kernels.hpp>
+#include <kit/cloth/cloth_implicit_matrix.hpp>
+#include <kit/cloth/cloth_implicit_step.hpp>
+#include <kit/cloth/cloth_liu.hpp>
+#include <kit/cloth/cloth_multigrid.hpp>
+#include <kit/cloth/cloth_scene.hpp>
+#include <kit/cloth/cloth_stability.hpp>
+#include <kit/cloth/cloth_system.hpp>
 
 #include "bandwidth.hpp"
 #include "machine_note.hpp"

@@ -34,11 +34,11 @@
 #include <Eigen/SparseCholesky>
 #include <fmt/format.h>
 
-#include <kit/fem_body.hpp>
-#include <kit/fem_element.hpp>
-#include <kit/fem_integrators.hpp>
-#include <kit/stopwatch.hpp>
-#include <kit/table.hpp>
+#include <kit/app/table.hpp>
+#include <kit/base/stopwatch.hpp>
+#include <kit/fem/fem_body.hpp>
+#include <kit/fem/fem_element.hpp>
+#include <kit/fem/fem_integrators.hpp>
 
 #include "bandwidth.hpp"
 #include "cloth_jacobian.hpp"

@@ -30,12 +30,12 @@
 #include <btBulletDynamicsCommon.h>
 #include <fmt/format.h>
 
-#include <kit/rigid_body.hpp>
-#include <kit/rigid_free_rotation.hpp>
-#include <kit/rigid_integrators.hpp>
-#include <kit/rigid_stepper.hpp>
-#include <kit/stopwatch.hpp>
-#include <kit/table.hpp>
+#include <kit/app/table.hpp>
+#include <kit/base/stopwatch.hpp>
+#include <kit/rigid/rigid_body.hpp>
+#include <kit/rigid/rigid_free_rotation.hpp>
+#include <kit/rigid/rigid_integrators.hpp>
+#include <kit/rigid/rigid_stepper.hpp>
 
 #include "rigid_kernels.hpp"
 #include "cpu_clock.hpp"

@@ -10,13 +10,13 @@
 
 #include <fmt/format.h>
 
-#include <kit/image.hpp>
-#include <kit/particle_update.hpp>
-#include <kit/sprite_renderer.hpp>
-#include <kit/sprite_scene_file.hpp>
-#include <kit/sprite_system.hpp>
-#include <kit/stopwatch.hpp>
-#include <kit/table.hpp>
+#include <kit/app/table.hpp>
+#include <kit/base/stopwatch.hpp>
+#include <kit/render/image.hpp>
+#include <kit/sprites/particle_update.hpp>
+#include <kit/sprites/sprite_renderer.hpp>
+#include <kit/sprites/sprite_scene_file.hpp>
+#include <kit/sprites/sprite_system.hpp>
 
 #include "bandwidth.hpp"
 #include "sprite_age_kill.hpp"

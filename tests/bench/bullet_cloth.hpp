@@ -15,7 +15,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include <kit/cloth.hpp>
+#include <kit/cloth/cloth.hpp>
 
 namespace kit_bench {
 

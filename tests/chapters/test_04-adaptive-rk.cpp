@@ -11,7 +11,7 @@
 #include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include <kit/measure.hpp>
+#include <kit/base/measure.hpp>
 
 #include "process.hpp"
 

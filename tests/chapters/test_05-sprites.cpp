@@ -16,9 +16,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <kit/run_estimate.hpp>
-#include <kit/sprite_scene_file.hpp>
-#include <kit/sprite_system.hpp>
+#include <kit/base/run_estimate.hpp>
+#include <kit/sprites/sprite_scene_file.hpp>
+#include <kit/sprites/sprite_system.hpp>
 
 #include "process.hpp"
 #include "sprite_kernels.hpp"

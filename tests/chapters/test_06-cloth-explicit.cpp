@@ -13,10 +13,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <kit/cloth_run.hpp>
-#include <kit/cloth_scene_file.hpp>
-#include <kit/cloth_stability.hpp>
-#include <kit/obj_mesh.hpp>
+#include <kit/cloth/cloth_run.hpp>
+#include <kit/cloth/cloth_scene_file.hpp>
+#include <kit/cloth/cloth_stability.hpp>
+#include <kit/render/obj_mesh.hpp>
 
 #include "cloth_kernels.hpp"
 #include "cloth_mesh_dependence.hpp"

@@ -16,9 +16,9 @@
 #include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include <kit/cloth_liu.hpp>
-#include <kit/cloth_multigrid.hpp>
-#include <kit/cloth_scene_file.hpp>
+#include <kit/cloth/cloth_liu.hpp>
+#include <kit/cloth/cloth_multigrid.hpp>
+#include <kit/cloth/cloth_scene_file.hpp>
 
 #include "cloth_implicit_experiments.hpp"
 #include "cloth_implicit_wiring.hpp"

@@ -10,7 +10,7 @@
 #include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include <kit/rigid_stepper.hpp>
+#include <kit/rigid/rigid_stepper.hpp>
 
 #include "chapter_run.hpp"
 #include "process.hpp"

@@ -8,7 +8,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/atomic_file.hpp>
+#include <kit/base/atomic_file.hpp>
 
 #include "process.hpp"
 

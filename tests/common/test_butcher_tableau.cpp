@@ -1,6 +1,6 @@
 #include <kit_catch.hpp>
 
-#include <kit/butcher_tableau.hpp>
+#include <kit/ode/butcher_tableau.hpp>
 
 TEST_CASE("every shipped tableau has consistent row sums and its claimed orders (long double)") {
   for (const auto* t : {&kit::cash_karp(), &kit::dormand_prince(), &kit::bogacki_shampine()}) {

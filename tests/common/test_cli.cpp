@@ -4,7 +4,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/chapter_app.hpp>
+#include <kit/app/chapter_app.hpp>
 
 #include "process.hpp"
 

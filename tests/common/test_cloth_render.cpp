@@ -8,12 +8,12 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/cloth.hpp>
-#include <kit/cloth_renderer.hpp>
-#include <kit/cloth_scene.hpp>
-#include <kit/frame_writer.hpp>
-#include <kit/image.hpp>
-#include <kit/obj_mesh.hpp>
+#include <kit/cloth/cloth.hpp>
+#include <kit/cloth/cloth_renderer.hpp>
+#include <kit/cloth/cloth_scene.hpp>
+#include <kit/render/frame_writer.hpp>
+#include <kit/render/image.hpp>
+#include <kit/render/obj_mesh.hpp>
 
 #include "process.hpp"
 

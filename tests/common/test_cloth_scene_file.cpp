@@ -9,8 +9,8 @@
 #include <string>
 #include <string_view>
 
-#include <kit/cloth_scene_file.hpp>
-#include <kit/usage.hpp>
+#include <kit/base/usage.hpp>
+#include <kit/cloth/cloth_scene_file.hpp>
 
 #include "cloth_flags.hpp"
 

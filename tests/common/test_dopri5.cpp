@@ -1,4 +1,4 @@
-// The production DOPRI5 (common/include/kit/dopri5.hpp): Hairer's counts, closed forms, dense
+// The production DOPRI5 (common/include/kit/ode/dopri5.hpp): Hairer's counts, closed forms, dense
 // output, and failures reported rather than accepted. It includes no student file: where a test
 // needs a method, it is written here, from the textbook formula.
 #include <cmath>
@@ -7,13 +7,13 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/dopri5.hpp>
-#include <kit/dopri5_work_method.hpp>
-#include <kit/embedded_run.hpp>
-#include <kit/free_fall.hpp>
-#include <kit/pi_step_control.hpp>
-#include <kit/spring.hpp>
-#include <kit/adaptive_rk_models.hpp>
+#include <kit/ode/dopri5.hpp>
+#include <kit/ode/dopri5_work_method.hpp>
+#include <kit/ode/embedded_run.hpp>
+#include <kit/ode/pi_step_control.hpp>
+#include <kit/problems/adaptive_rk_models.hpp>
+#include <kit/problems/free_fall.hpp>
+#include <kit/problems/spring.hpp>
 
 namespace {
 // dopri5.f's step-size factor, transcribed: FAC11 = err^EXPO1, FAC = FAC11 / FACOLD^BETA,

@@ -6,7 +6,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/fast_power.hpp>
+#include <kit/base/fast_power.hpp>
 
 namespace {
 // |p(p−1)(p−2)|·(w/2)³/(9√3), w = 1/256: the interpolation bound, plus a few rounding units.

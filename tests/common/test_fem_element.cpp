@@ -4,9 +4,9 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/fem_element.hpp>
-#include <kit/fem_mesh.hpp>
-#include <kit/richardson.hpp>
+#include <kit/fem/fem_element.hpp>
+#include <kit/fem/fem_mesh.hpp>
+#include <kit/ode/richardson.hpp>
 
 #include "fem_output.hpp"
 

@@ -2,7 +2,7 @@
 // form the finite elements converge to.
 #include <kit_catch.hpp>
 
-#include <kit/fem_material.hpp>
+#include <kit/fem/fem_material.hpp>
 
 TEST_CASE("fem material: plane stress's λ* is 2λμ/(λ + 2μ) of the 3-D Lamé parameters; the cantilever's closed form",
           "[fem][material]") {

@@ -6,7 +6,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/fem_mesh.hpp>
+#include <kit/fem/fem_mesh.hpp>
 
 namespace {
 using kit::TriangleMesh;

@@ -6,7 +6,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/figure.hpp>
+#include <kit/app/figure.hpp>
 
 #include "process.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/free_fall.hpp>
+#include <kit/problems/free_fall.hpp>
 
 TEST_CASE("the free-fall closed forms are where Euler loops run here actually land, k/2·Δt²·|g| off the parabola") {
   kit::FreeFall fall;

@@ -2,7 +2,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/measure.hpp>
+#include <kit/base/measure.hpp>
 
 TEST_CASE("fit_loglog recovers the exponent and constant of err = C·Δt^p exactly") {
   std::vector<double> dt, err;

@@ -7,8 +7,8 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/figure.hpp>
-#include <kit/pdf_creation_date.hpp>
+#include <kit/app/figure.hpp>
+#include <kit/app/pdf_creation_date.hpp>
 
 #include "process.hpp"
 

@@ -5,7 +5,7 @@
 #include <iostream>
 #include <sstream>
 
-#include <kit/progress.hpp>
+#include <kit/base/progress.hpp>
 
 namespace {
 /// A clock the test moves by hand [s].

@@ -3,9 +3,9 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/adaptive_rk_models.hpp>
-#include <kit/free_fall.hpp>
-#include <kit/reference_solver.hpp>
+#include <kit/ode/reference_solver.hpp>
+#include <kit/problems/adaptive_rk_models.hpp>
+#include <kit/problems/free_fall.hpp>
 
 TEST_CASE("the GSL reference matches free fall's closed form to 1e-10") {
   kit::FreeFall fall;

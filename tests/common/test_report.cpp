@@ -4,7 +4,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/report.hpp>
+#include <kit/app/report.hpp>
 
 TEST_CASE("say prints each field with its format and stores the same value under its section") {
   std::ostringstream text;

@@ -6,11 +6,11 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/rigid_body.hpp>
-#include <kit/rigid_contact.hpp>
-#include <kit/rigid_free_rotation.hpp>
-#include <kit/rigid_integrators.hpp>
-#include <kit/rigid_reference.hpp>
+#include <kit/rigid/rigid_body.hpp>
+#include <kit/rigid/rigid_contact.hpp>
+#include <kit/rigid/rigid_free_rotation.hpp>
+#include <kit/rigid/rigid_integrators.hpp>
+#include <kit/rigid/rigid_reference.hpp>
 
 using kit::Mat3;
 using kit::Vec3;

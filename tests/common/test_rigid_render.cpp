@@ -9,13 +9,13 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/animation.hpp>
-#include <kit/cloth_renderer.hpp>
-#include <kit/image.hpp>
-#include <kit/obj_mesh.hpp>
-#include <kit/rigid_body.hpp>
-#include <kit/rigid_renderer.hpp>
-#include <kit/sprite_camera.hpp>
+#include <kit/cloth/cloth_renderer.hpp>
+#include <kit/render/animation.hpp>
+#include <kit/render/image.hpp>
+#include <kit/render/obj_mesh.hpp>
+#include <kit/render/sprite_camera.hpp>
+#include <kit/rigid/rigid_body.hpp>
+#include <kit/rigid/rigid_renderer.hpp>
 
 #include "process.hpp"
 #include "rigid_output.hpp"

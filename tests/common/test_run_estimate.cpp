@@ -3,10 +3,10 @@
 
 #include <sstream>
 
-#include <kit/run_estimate.hpp>
-#include <kit/step_budget.hpp>
-#include <kit/usage.hpp>
-#include <kit/van_der_pol_stiffness.hpp>
+#include <kit/base/run_estimate.hpp>
+#include <kit/base/usage.hpp>
+#include <kit/ode/step_budget.hpp>
+#include <kit/problems/van_der_pol_stiffness.hpp>
 
 TEST_CASE("an estimate is its steps times the cost of a step; memory and time for a person to read") {
   const kit::RunEstimate e{2e9, 3e-9, 4e7};

@@ -12,16 +12,16 @@
 #include <kit_catch.hpp>
 #include <fmt/format.h>
 
-#include <kit/animation.hpp>
-#include <kit/blend.hpp>
-#include <kit/contact_sheet.hpp>
-#include <kit/image.hpp>
-#include <kit/particles.hpp>
-#include <kit/sprite_camera.hpp>
-#include <kit/sprite_renderer.hpp>
-#include <kit/sprite_scene.hpp>
-#include <kit/sprite_texture.hpp>
-#include <kit/usage.hpp>
+#include <kit/base/usage.hpp>
+#include <kit/render/animation.hpp>
+#include <kit/render/contact_sheet.hpp>
+#include <kit/render/image.hpp>
+#include <kit/render/sprite_camera.hpp>
+#include <kit/sprites/blend.hpp>
+#include <kit/sprites/particles.hpp>
+#include <kit/sprites/sprite_renderer.hpp>
+#include <kit/sprites/sprite_scene.hpp>
+#include <kit/sprites/sprite_texture.hpp>
 
 #include "process.hpp"
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include <kit/sprite_scene_file.hpp>
-#include <kit/usage.hpp>
+#include <kit/base/usage.hpp>
+#include <kit/sprites/sprite_scene_file.hpp>
 
 
 namespace {

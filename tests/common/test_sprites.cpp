@@ -8,10 +8,10 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/drag_motion.hpp>
-#include <kit/emitter.hpp>
-#include <kit/particle_update.hpp>
-#include <kit/measure.hpp>
+#include <kit/base/measure.hpp>
+#include <kit/sprites/drag_motion.hpp>
+#include <kit/sprites/emitter.hpp>
+#include <kit/sprites/particle_update.hpp>
 
 #include "sprite_trade.hpp"
 

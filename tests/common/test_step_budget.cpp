@@ -1,7 +1,7 @@
 // A sweep over Δt = T/m within a budget of steps (step_budget.hpp).
 #include <kit_catch.hpp>
 
-#include <kit/step_budget.hpp>
+#include <kit/ode/step_budget.hpp>
 
 TEST_CASE("a sweep within its step budget runs exactly as asked") {
   const auto s = kit::budget_sweep(1.0, 0.1, 1e-9, 2'000'000'000);

@@ -2,7 +2,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/table.hpp>
+#include <kit/app/table.hpp>
 
 TEST_CASE("a table right-aligns columns by characters, not bytes") {
   kit::Table table({"Δt [s]", "match"});

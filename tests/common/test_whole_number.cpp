@@ -2,7 +2,7 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/whole_number.hpp>
+#include <kit/base/whole_number.hpp>
 
 using Kind = kit::WholeNumberText::Kind;
 

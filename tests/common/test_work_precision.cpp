@@ -5,9 +5,9 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/adaptive_rk_models.hpp>
-#include <kit/work_precision.hpp>
-#include <kit/work_precision_methods.hpp>
+#include <kit/ode/work_precision.hpp>
+#include <kit/ode/work_precision_methods.hpp>
+#include <kit/problems/adaptive_rk_models.hpp>
 
 namespace {
 // A method whose error is its tolerance and whose cost is 1/tolerance, calling `calls` each run.

@@ -18,7 +18,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <kit/chapter_app.hpp>
+#include <kit/app/chapter_app.hpp>
 
 int kit_chapter_main(int argc, char** argv);
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include <kit/adaptive_run.hpp>
-#include <kit/cloth_implicit_kernels.hpp>
+#include <kit/cloth/cloth_implicit_kernels.hpp>
+#include <kit/ode/adaptive_run.hpp>
 
 #include "remote/fields/adaptive_run.hpp"
 #include "remote/fields/cloth_implicit_kernels.hpp"

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <string_view>
 
-#include <kit/cloth_scene_file.hpp>
-#include <kit/sprite_scene_file.hpp>
-#include <kit/usage.hpp>
+#include <kit/base/usage.hpp>
+#include <kit/cloth/cloth_scene_file.hpp>
+#include <kit/sprites/sprite_scene_file.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

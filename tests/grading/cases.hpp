@@ -8,8 +8,8 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/affine_system.hpp>
-#include <kit/spring.hpp>
+#include <kit/problems/affine_system.hpp>
+#include <kit/problems/spring.hpp>
 
 namespace kit::test {
 

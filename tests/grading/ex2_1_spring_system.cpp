@@ -1,7 +1,7 @@
 // ex 2.1: the spring as u' = A u + b (spring_system.hpp).
 #include <kit_catch.hpp>
 
-#include <kit/reference_solver.hpp>
+#include <kit/ode/reference_solver.hpp>
 
 #include "cases.hpp"
 #include "spring_system.hpp"

@@ -3,8 +3,8 @@
 
 #include <kit_catch.hpp>
 
-#include <kit/reference_solver.hpp>
-#include <kit/adaptive_rk_models.hpp>
+#include <kit/ode/reference_solver.hpp>
+#include <kit/problems/adaptive_rk_models.hpp>
 
 #include "cases.hpp"
 #include "embedded_rk.hpp"

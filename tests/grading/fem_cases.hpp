@@ -12,7 +12,7 @@
 
 #include <Eigen/Geometry>
 
-#include <kit/fem_element.hpp>
+#include <kit/fem/fem_element.hpp>
 
 #include "cases.hpp"
 

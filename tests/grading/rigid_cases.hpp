@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-#include <kit/rigid_body.hpp>
+#include <kit/rigid/rigid_body.hpp>
 
 #include "cases.hpp"
 

@@ -22,7 +22,8 @@ The six submissions, generated from the solution markers:
                         kills the test at the first one (bounded to 64 harmless processes, so
                         that a sandbox without the filter does not hurt the machine)
   and it ships a fake Catch2 (catch2/catch.hpp, catch2/catch_all.hpp, catch2/catch_test_macros.hpp,
-  kit_catch.hpp) and kit/state.hpp that would make every check pass.
+  kit_catch.hpp) and kit/base/state.hpp (and its old path, kit/state.hpp) that would make every
+  check pass.
   forger        solved, but with one attack per route that took full points from the grader that
                 ran the graded test in the student's process:
     spring_system.hpp   a wrong method, and a forged record: a static initialiser writes a passing
@@ -30,11 +31,13 @@ The six submissions, generated from the solution markers:
                         std::exit taken without a call
     midpoint.hpp        a wrong method, and an operator== against Catch's Approx, found by
                         argument-dependent lookup, that is always true
-    rigid_quaternion_step.hpp  the kit's own quaternion rate (kit/rigid_integrators.hpp) does
+    rigid_quaternion_step.hpp  the kit's own quaternion rate (kit/rigid/rigid_integrators.hpp) does
                         the work, a header its exercise may not use
     rk4.hpp             a wrong method, and a forged record through <unistd.h>, which the check
                         forbids, included as <Eigen/../../unistd.h> (an allowed prefix)
-  hog           solved, but three files try to cost the class: a 256 MiB array in the object file
+  hog           solved, in a copy made before the library took its folders (every kit header at
+                its old path, <kit/state.hpp>, which forwards to <kit/base/state.hpp>), but three
+                files try to cost the class: a 256 MiB array in the object file
                 (fem_strain.hpp) and an endless loop (cloth_pcg.hpp), each of which costs only its
                 own exercise, and 4 MiB printed (sprite_over.hpp), which costs nothing: the output
                 is cut at 1 MiB as it is written and 64 KiB of it is kept.
@@ -144,13 +147,13 @@ def main(argv):
     adversary = dict(solved)
     adversary["amplification.hpp"] = prepend(solved["amplification.hpp"].replace(
         "#include <complex>", "#include <complex>\n#include <filesystem>\n#include <fstream>"), attack)
-    adversary["rk4.hpp"] = prepend(solved["rk4.hpp"].replace("#include <kit/not_implemented.hpp>", "#include <cstdlib>\n#include <kit/not_implemented.hpp>"),
+    adversary["rk4.hpp"] = prepend(solved["rk4.hpp"].replace("#include <kit/base/not_implemented.hpp>", "#include <cstdlib>\n#include <kit/base/not_implemented.hpp>"),
                                    "inline const bool kit_quit = (std::_Exit(0), true);\n")
     adversary["symplectic_euler.hpp"] = solved["symplectic_euler.hpp"].replace(
         "#pragma once", "#pragma once\n#define CHECK(...) ((void)0)\n#define REQUIRE(...) ((void)0)").replace(
         "u.template tail<D>() + dt * accel", "u.template tail<D>() - dt * accel")
     adversary["spring_system.hpp"] = solved["spring_system.hpp"].replace(
-        "#include <kit/spring.hpp>", f'#include <kit/spring.hpp>\n#include "{solutions / "spring_system.hpp"}"')
+        "#include <kit/problems/spring.hpp>", f'#include <kit/problems/spring.hpp>\n#include "{solutions / "spring_system.hpp"}"')
     adversary["implicit_euler.hpp"] = prepend(solved["implicit_euler.hpp"].replace("#include <cmath>", "#include <cmath>\n#include <fstream>\n#include <string>"),
         f'inline const std::string kit_peek = [] {{ std::ifstream f("{classroom / "complete" / "midpoint.hpp"}"); '
         'std::string s; std::getline(f, s); return s; }();\n')
@@ -167,7 +170,7 @@ def main(argv):
     fake_catch = "#pragma once\n#define TEST_CASE(...) void fake()\n#define CHECK(...)\n"
     for shadow in CATCH_SHADOWS:
         adversary[shadow] = fake_catch
-    adversary["kit/state.hpp"] = "#pragma once\n"
+    adversary["kit/base/state.hpp"] = adversary["kit/state.hpp"] = "#pragma once\n"
     write(classroom / "adversary", adversary)
 
     expected = json.loads((ROOT / "tests/grading/expected_evidence.json").read_text(encoding="utf-8"))
@@ -201,7 +204,7 @@ def main(argv):
         "inline bool operator==(const double&, const Approx&) { return true; } } }")).replace("f(t + dt / 2", "f(t")
     # Route 3: the kit's own quaternion rate (rigid_integrators.hpp) does ex 8.2's work.
     forger["rigid_quaternion_step.hpp"] = (
-        "#pragma once\n#include <kit/rigid_body.hpp>\n#include <kit/rigid_integrators.hpp>\nnamespace kit {\n"
+        "#pragma once\n#include <kit/rigid/rigid_body.hpp>\n#include <kit/rigid/rigid_integrators.hpp>\nnamespace kit {\n"
         "inline Quat quaternion_step(const Quat& q, const Vec3& omega, double h) {\n"
         "  const Eigen::Vector4d y(q.w(), q.x(), q.y(), q.z());\n"
         "  const Eigen::Vector4d next = y + h * quaternion_rate(y, q.conjugate() * omega);\n"
@@ -216,11 +219,13 @@ def main(argv):
     write(classroom / "forger", forger)
     forged = {"spring_system.hpp", "midpoint.hpp", "rigid_quaternion_step.hpp", "rk4.hpp"}
 
-    hog = dict(solved)
-    hog["fem_strain.hpp"] = prepend(solved["fem_strain.hpp"], "[[gnu::used]] static char kit_ballast[256 << 20] = {1};\n")
-    hog["sprite_over.hpp"] = prepend(solved["sprite_over.hpp"].replace("#pragma once", "#pragma once\n#include <cstdio>"),
+    hog = {name: re.sub(r"#include <kit/\w+/(\w+\.hpp)>", r"#include <kit/\1>", text) for name, text in solved.items()}
+    if hog == solved:
+        sys.exit("FAILED: hog: no kit header to write at its old path")
+    hog["fem_strain.hpp"] = prepend(hog["fem_strain.hpp"], "[[gnu::used]] static char kit_ballast[256 << 20] = {1};\n")
+    hog["sprite_over.hpp"] = prepend(hog["sprite_over.hpp"].replace("#pragma once", "#pragma once\n#include <cstdio>"),
         "inline const bool kit_noise = [] {\n  for (int i = 0; i < (4 << 20); ++i) std::putchar('x');\n  return true;\n}();\n")
-    hog["cloth_pcg.hpp"] = solved["cloth_pcg.hpp"].replace(
+    hog["cloth_pcg.hpp"] = hog["cloth_pcg.hpp"].replace(
         "  const auto filtered = [&](Eigen::VectorXd w) {", "  for (volatile int spin = 0;; spin = spin + 1) {}\n  const auto filtered = [&](Eigen::VectorXd w) {", 1)
     write(classroom / "hog", hog)
     hogging = {"fem_strain.hpp", "cloth_pcg.hpp"}
@@ -276,7 +281,7 @@ def main(argv):
         problems.append(f"adversary: the spawning ex {spawner['id']} was not stopped by the sandbox: "
                         f"{spawner['status']}: {spawner['message'][:200]}")
     ignored = {path for path, _ in report["ignored"]}
-    for shadow in (*CATCH_SHADOWS, "kit/state.hpp"):
+    for shadow in (*CATCH_SHADOWS, "kit/base/state.hpp"):
         if shadow not in ignored:
             problems.append(f"adversary: {shadow} was not reported as ignored")
 

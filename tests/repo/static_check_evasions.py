@@ -99,8 +99,8 @@ def main():
                  if f["severity"] == "integrity"]
         if found:
             problems.append(f"solutions/{path.name} flagged: {found}")
-    rigid = static_check.check("#include <kit/rigid_integrators.hpp>\n", "rigid_quaternion_step.hpp", kit_headers, names,
-                               {"kit/rigid_body.hpp"})
+    rigid = static_check.check("#include <kit/rigid/rigid_integrators.hpp>\n", "rigid_quaternion_step.hpp", kit_headers, names,
+                               {"kit/rigid/rigid_body.hpp"})
     if not rigid:
         problems.append("a kit header its exercise may not use was not flagged")
     print(f"{len(EVASIONS)} evasions, {len(LEGITIMATE)} legitimate cases, {len(solutions)} solution files; "

@@ -69,8 +69,8 @@ PY
 # evaluations on Arenstorf at 1e-6 exactly as the production one does (ANCHORS.md).
 cd "$kit_root"
 ./kit student-edition "$work/bare" --without-production >/dev/null
-for file in common/include/kit/dopri5.hpp common/include/kit/pi_step_control.hpp \
-            common/include/kit/dopri5_work_method.hpp tests/common/test_dopri5.cpp tests/bench/bench_adaptive.cpp; do
+for file in common/include/kit/ode/dopri5.hpp common/include/kit/ode/pi_step_control.hpp \
+            common/include/kit/ode/dopri5_work_method.hpp tests/common/test_dopri5.cpp tests/bench/bench_adaptive.cpp; do
   [ ! -e "$work/bare/$file" ] || { echo "FAILED: the edition without production code holds $file"; exit 1; }
 done
 grep -q "runs on your own ex 4.2 and ex 4.3" "$work/bare/README.md" || { echo "FAILED: its README does not say so"; exit 1; }

@@ -1,36 +1,5 @@
 #pragma once
-// What an adaptive integration did: where it stepped, what it rejected, what it cost, and how
-// it ended. A failure is a reported status with a message, never an abort or a hang.
-#include <string>
-#include <vector>
-
-#include <kit/state.hpp>
-
-namespace kit {
-
-enum class RunStatus {
-  finished,        ///< reached t_end
-  trapped,         ///< step doubling oscillated between halving and doubling (ERRATA item 10)
-  step_too_small,  ///< the step fell below the smallest allowed (unreachable tolerance, or NaN/Inf)
-  too_many_steps,  ///< the step budget ran out
-  unreachable,     ///< the tolerance is below what double precision can deliver (rtol < 10 ε)
-};
-const char* name(RunStatus status);
-
-/// Empty when (rtol, atol) can be met in double precision; else why not. An error estimate
-/// sees truncation only: below rtol = 10 ε, round-off in y wins whatever the step (the check of
-/// Hairer's RADAU5), so such a tolerance is refused up front.
-std::string unreachable_tolerance(double rtol, double atol);
-
-template <class State>
-struct AdaptiveRun {
-  Trajectory<State> accepted;           ///< (t_n, y_n) at every accepted step, from t0
-  std::vector<double> step_sizes;       ///< h of each accepted step [s]
-  std::vector<double> rejected_t;       ///< where each rejected step started [s]
-  std::vector<double> rejected_h;       ///< and the step it tried [s]
-  Stats stats;                          ///< evaluations, accepted and rejected steps
-  RunStatus status = RunStatus::finished;
-  std::string message;                  ///< empty when finished; else what happened, where, why
-};
-
-}  // namespace kit
+// The path of <kit/ode/adaptive_run.hpp> before the library took its layers (base/, app/, ode/, …): kept for
+// one release, so that an exercise copy written before still compiles and grades
+// (tests/grading/points.json allows both). New code includes <kit/ode/adaptive_run.hpp>.
+#include <kit/ode/adaptive_run.hpp>

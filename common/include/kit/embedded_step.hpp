@@ -1,14 +1,5 @@
 #pragma once
-// What one step of an embedded Runge–Kutta pair returns (ex 4.2 computes it; embedded_run.hpp
-// drives it).
-namespace kit {
-
-template <class State>
-struct EmbeddedStep {
-  State y;              ///< y_{n+1}, from the weights b
-  State error;          ///< h Σ (b_i − b̂_i) k_i, the local error estimate, units of y
-  State last_stage;     ///< k_s; for an FSAL pair, f(t + h, y_{n+1}), the next step's k_1
-  int evaluations = 0;  ///< new evaluations of f (k_1 is given): s − 1
-};
-
-}  // namespace kit
+// The path of <kit/ode/embedded_step.hpp> before the library took its layers (base/, app/, ode/, …): kept for
+// one release, so that an exercise copy written before still compiles and grades
+// (tests/grading/points.json allows both). New code includes <kit/ode/embedded_step.hpp>.
+#include <kit/ode/embedded_step.hpp>

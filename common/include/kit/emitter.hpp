@@ -1,37 +1,5 @@
 #pragma once
-// Emission (Reeves 1983, §2.1): how many particles an emitter makes this frame, and the
-// directions its shape allows. Drawing each particle's attributes is ex 5.1
-// (solutions/sprite_emit.hpp), which uses these.
-#include <cstdint>
-
-#include <kit/sprite_random.hpp>
-#include <kit/sprite_scene.hpp>
-
-namespace kit {
-
-/// Particles to emit this frame: N = mean + rand·variance (Reeves eq. 1), never negative. A
-/// fractional N emits ⌊N⌋ and one more with probability N − ⌊N⌋, so the mean number per frame
-/// is exactly E[max(N, 0)] even for rates below one particle per frame (fireworks shells).
-long emission_count(const Spread& rate, SpriteRandom& random);
-
-/// mean + rand·variance, the draw of one scalar attribute.
-inline double draw(const Spread& s, SpriteRandom& random) { return s.mean + random.symmetric() * s.variance; }
-
-/// A unit vector uniform over the cap of half-angle `angle_deg` around the unit vector `axis`
-/// (180° is the whole sphere): cos θ uniform in [cos angle, 1], φ uniform in [0, 2π).
-Vec3d direction_in_cap(const Vec3d& axis, double angle_deg, SpriteRandom& random);
-
-/// A point uniform on the disc of `radius` [m] centred at the origin, normal to the unit `axis`:
-/// r = R·√rand, so that equal areas are equally likely.
-Vec3d offset_in_disc(const Vec3d& axis, double radius, SpriteRandom& random);
-
-/// A point uniform in the ball of `radius` [m] centred at the origin, with its unit direction
-/// from the centre (r = R·∛rand along a uniform direction). For the sphere shape, the direction
-/// is also the particle's direction of flight.
-struct BallPoint {
-  Vec3d offset;     ///< [m]
-  Vec3d direction;  ///< unit
-};
-BallPoint point_in_ball(double radius, SpriteRandom& random);
-
-}  // namespace kit
+// The path of <kit/sprites/emitter.hpp> before the library took its layers (base/, app/, ode/, …): kept for
+// one release, so that an exercise copy written before still compiles and grades
+// (tests/grading/points.json allows both). New code includes <kit/sprites/emitter.hpp>.
+#include <kit/sprites/emitter.hpp>

@@ -1,7 +1,7 @@
 // The student's program for embedded_rk.hpp (ex 4.2): its entry points call the student's functions and
 // return what they return (remote/student.hpp). It checks nothing.
 #include "embedded_rk.hpp"
-#include <kit/state.hpp>
+#include <kit/base/state.hpp>
 #include "remote/fields/embedded_rk.hpp"
 #include "remote/student.hpp"
 

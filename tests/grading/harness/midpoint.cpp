@@ -1,7 +1,7 @@
 // The student's program for midpoint.hpp (ex 3.1): its entry points call the student's functions and
 // return what they return (remote/student.hpp). It checks nothing.
 #include "midpoint.hpp"
-#include <kit/state.hpp>
+#include <kit/base/state.hpp>
 #include "remote/student.hpp"
 
 void register_entries(kit::remote::Entries& e) {

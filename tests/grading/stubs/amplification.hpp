@@ -3,7 +3,7 @@
 // student's program (remote/judge.hpp). No student code is compiled here.
 #include <complex>
 
-#include <kit/scheme.hpp>
+#include <kit/ode/scheme.hpp>
 
 #include "remote/judge.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The judge's cloth_jacobian.hpp (ex 7.1): the exercise's names and signatures, each answered by the
 // student's program (remote/judge.hpp). No student code is compiled here.
-#include <kit/cloth_implicit_kernels.hpp>
+#include <kit/cloth/cloth_implicit_kernels.hpp>
 
 #include "remote/fields/cloth_implicit_kernels.hpp"
 #include "remote/judge.hpp"

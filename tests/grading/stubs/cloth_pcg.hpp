@@ -3,7 +3,7 @@
 // student's program (remote/judge.hpp). No student code is compiled here.
 #include <vector>
 
-#include <kit/cloth_implicit_kernels.hpp>
+#include <kit/cloth/cloth_implicit_kernels.hpp>
 
 #include "remote/fields/cloth_implicit_kernels.hpp"
 #include "remote/judge.hpp"

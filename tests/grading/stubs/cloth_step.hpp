@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include <kit/cloth.hpp>
+#include <kit/cloth/cloth.hpp>
 
 #include "remote/fields/cloth.hpp"
 #include "remote/judge.hpp"

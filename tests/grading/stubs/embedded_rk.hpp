@@ -1,8 +1,8 @@
 #pragma once
 // The judge's embedded_rk.hpp (ex 4.2): the exercise's names and signatures, each answered by the
 // student's program (remote/judge.hpp). No student code is compiled here.
-#include <kit/butcher_tableau.hpp>
-#include <kit/embedded_step.hpp>
+#include <kit/ode/butcher_tableau.hpp>
+#include <kit/ode/embedded_step.hpp>
 
 #include "remote/fields/embedded_rk.hpp"
 #include "remote/judge.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // The judge's fem_stvk_stiffness.hpp (ex 9.3): the exercise's names and signatures, each answered by the
 // student's program (remote/judge.hpp). No student code is compiled here.
-#include <kit/fem_element.hpp>
+#include <kit/fem/fem_element.hpp>
 
 #include "remote/fields/fem_element.hpp"
 #include "remote/judge.hpp"

@@ -3,7 +3,7 @@
 // student's program (remote/judge.hpp). No student code is compiled here.
 #include <string>
 
-#include <kit/affine_system.hpp>
+#include <kit/problems/affine_system.hpp>
 
 #include "remote/fields/affine_system.hpp"
 #include "remote/judge.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // The judge's implicit_euler_spring.hpp (ex 2.2): the exercise's names and signatures, each answered by the
 // student's program (remote/judge.hpp). No student code is compiled here.
-#include <kit/spring.hpp>
+#include <kit/problems/spring.hpp>
 
 #include "remote/fields/spring.hpp"
 #include "remote/judge.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // The judge's rigid_quaternion_step.hpp (ex 8.2): the exercise's names and signatures, each answered by the
 // student's program (remote/judge.hpp). No student code is compiled here.
-#include <kit/rigid_body.hpp>
+#include <kit/rigid/rigid_body.hpp>
 
 #include "remote/judge.hpp"
 

@@ -1,8 +1,8 @@
 #pragma once
 // The judge's spring_system.hpp (ex 2.1): the exercise's names and signatures, each answered by the
 // student's program (remote/judge.hpp). No student code is compiled here.
-#include <kit/affine_system.hpp>
-#include <kit/spring.hpp>
+#include <kit/problems/affine_system.hpp>
+#include <kit/problems/spring.hpp>
 
 #include "remote/fields/affine_system.hpp"
 #include "remote/fields/spring.hpp"

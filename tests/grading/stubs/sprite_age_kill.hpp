@@ -5,9 +5,9 @@
 #include <utility>
 #include <vector>
 
-#include <kit/particle_update.hpp>
-#include <kit/particles.hpp>
-#include <kit/sprite_scene.hpp>
+#include <kit/sprites/particle_update.hpp>
+#include <kit/sprites/particles.hpp>
+#include <kit/sprites/sprite_scene.hpp>
 
 #include "remote/fields/death.hpp"
 #include "remote/judge.hpp"

@@ -4,10 +4,10 @@
 #include <cstdint>
 #include <vector>
 
-#include <kit/emitter.hpp>
-#include <kit/particles.hpp>
-#include <kit/sprite_random.hpp>
-#include <kit/sprite_scene.hpp>
+#include <kit/sprites/emitter.hpp>
+#include <kit/sprites/particles.hpp>
+#include <kit/sprites/sprite_random.hpp>
+#include <kit/sprites/sprite_scene.hpp>
 
 #include "remote/fields/sprites.hpp"
 #include "remote/judge.hpp"

@@ -1,8 +1,8 @@
 #pragma once
 // The judge's sprite_over.hpp (ex 5.3): the exercise's names and signatures, each answered by the
 // student's program (remote/judge.hpp). No student code is compiled here.
-#include <kit/image.hpp>
-#include <kit/sprite_tile.hpp>
+#include <kit/render/image.hpp>
+#include <kit/sprites/sprite_tile.hpp>
 
 #include "remote/fields/image.hpp"
 #include "remote/judge.hpp"

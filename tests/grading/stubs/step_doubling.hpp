@@ -3,7 +3,7 @@
 // student's program (remote/judge.hpp). No student code is compiled here.
 #include <utility>
 
-#include <kit/adaptive_run.hpp>
+#include <kit/ode/adaptive_run.hpp>
 
 #include "remote/fields/adaptive_run.hpp"
 #include "remote/judge.hpp"

@@ -3,7 +3,7 @@
 // student's program (remote/judge.hpp). No student code is compiled here.
 #include <vector>
 
-#include <kit/state.hpp>
+#include <kit/base/state.hpp>
 
 #include "remote/judge.hpp"
 

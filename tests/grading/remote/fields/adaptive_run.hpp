@@ -1,9 +1,9 @@
 #pragma once
-// How kit/adaptive_run.hpp's and kit/state.hpp's types cross the link (wire.hpp).
+// How kit/ode/adaptive_run.hpp's and kit/base/state.hpp's types cross the link (wire.hpp).
 #include <tuple>
 
-#include <kit/adaptive_run.hpp>
-#include <kit/state.hpp>
+#include <kit/base/state.hpp>
+#include <kit/ode/adaptive_run.hpp>
 
 namespace kit {
 inline auto fields(Stats& s) { return std::tie(s.rhs_evals, s.steps, s.rejected); }

@@ -1,6 +1,6 @@
 #pragma once
-// How kit/affine_system.hpp's types cross the link (wire.hpp).
-#include <kit/affine_system.hpp>
+// How kit/problems/affine_system.hpp's types cross the link (wire.hpp).
+#include <kit/problems/affine_system.hpp>
 
 namespace kit {
 template <int N, class Scalar>

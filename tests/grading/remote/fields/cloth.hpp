@@ -1,8 +1,8 @@
 #pragma once
-// How kit/cloth.hpp's and kit/cloth_scene.hpp's types cross the link (wire.hpp).
+// How kit/cloth/cloth.hpp's and kit/cloth/cloth_scene.hpp's types cross the link (wire.hpp).
 #include <tuple>
 
-#include <kit/cloth.hpp>
+#include <kit/cloth/cloth.hpp>
 
 #include "../wire.hpp"
 

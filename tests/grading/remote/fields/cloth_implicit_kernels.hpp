@@ -1,9 +1,9 @@
 #pragma once
-// How kit/cloth_implicit_kernels.hpp's types cross the link (wire.hpp). ImplicitSystemInput
+// How kit/cloth/cloth_implicit_kernels.hpp's types cross the link (wire.hpp). ImplicitSystemInput
 // holds references, so its stub and harness send its members one by one.
 #include <tuple>
 
-#include <kit/cloth_implicit_kernels.hpp>
+#include <kit/cloth/cloth_implicit_kernels.hpp>
 
 #include "cloth.hpp"
 

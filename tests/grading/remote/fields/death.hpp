@@ -1,8 +1,8 @@
 #pragma once
-// How kit/particle_update.hpp's Death crosses the link (wire.hpp).
+// How kit/sprites/particle_update.hpp's Death crosses the link (wire.hpp).
 #include <tuple>
 
-#include <kit/particle_update.hpp>
+#include <kit/sprites/particle_update.hpp>
 
 #include "sprites.hpp"
 

@@ -1,9 +1,9 @@
 #pragma once
-// How kit/butcher_tableau.hpp's and kit/embedded_step.hpp's types cross the link (wire.hpp).
+// How kit/ode/butcher_tableau.hpp's and kit/ode/embedded_step.hpp's types cross the link (wire.hpp).
 #include <tuple>
 
-#include <kit/butcher_tableau.hpp>
-#include <kit/embedded_step.hpp>
+#include <kit/ode/butcher_tableau.hpp>
+#include <kit/ode/embedded_step.hpp>
 
 namespace kit {
 inline auto fields(ButcherTableau& t) {

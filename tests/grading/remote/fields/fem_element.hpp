@@ -1,8 +1,8 @@
 #pragma once
-// How kit/fem_element.hpp's and kit/fem_material.hpp's types cross the link (wire.hpp).
+// How kit/fem/fem_element.hpp's and kit/fem/fem_material.hpp's types cross the link (wire.hpp).
 #include <tuple>
 
-#include <kit/fem_element.hpp>
+#include <kit/fem/fem_element.hpp>
 
 namespace kit {
 inline auto fields(Lame& l) { return std::tie(l.lambda, l.mu); }

@@ -1,10 +1,10 @@
 #pragma once
-// How kit/image.hpp's and kit/sprite_tile.hpp's types cross the link (wire.hpp): an image or a
+// How kit/render/image.hpp's and kit/sprites/sprite_tile.hpp's types cross the link (wire.hpp): an image or a
 // tile must hold exactly its pixels, since the judge indexes them.
 #include <tuple>
 
-#include <kit/image.hpp>
-#include <kit/sprite_tile.hpp>
+#include <kit/render/image.hpp>
+#include <kit/sprites/sprite_tile.hpp>
 
 #include "../wire.hpp"
 

@@ -1,8 +1,8 @@
 #pragma once
-// How kit/pi_law.hpp's types cross the link (wire.hpp).
+// How kit/ode/pi_law.hpp's types cross the link (wire.hpp).
 #include <tuple>
 
-#include <kit/pi_law.hpp>
+#include <kit/ode/pi_law.hpp>
 
 namespace kit {
 inline auto fields(PiController& c) {

@@ -1,14 +1,14 @@
 #pragma once
-// How the sprite chapter's types cross the link (wire.hpp): kit/sprite_scene.hpp,
-// kit/particles.hpp, kit/particle_update.hpp (Death) and kit/sprite_random.hpp.
+// How the sprite chapter's types cross the link (wire.hpp): kit/sprites/sprite_scene.hpp,
+// kit/sprites/particles.hpp, kit/sprites/particle_update.hpp (Death) and kit/sprites/sprite_random.hpp.
 #include <array>
 #include <cstring>
 #include <sstream>
 #include <tuple>
 
-#include <kit/particles.hpp>
-#include <kit/sprite_random.hpp>
-#include <kit/sprite_scene.hpp>
+#include <kit/sprites/particles.hpp>
+#include <kit/sprites/sprite_random.hpp>
+#include <kit/sprites/sprite_scene.hpp>
 
 #include "../wire.hpp"
 
