@@ -29,7 +29,7 @@ PRODUCTION = {
     "common/include/kit/ode/dopri5.hpp": "ex 4.2 for one tableau (the Dormand-Prince stages), and ex 4.3 in use",
     "common/include/kit/ode/pi_step_control.hpp": "ex 4.3, the PI step-size law, in a latency-conscious form",
     "common/include/kit/ode/dopri5_work_method.hpp": "the production DOPRI5 in the work-precision harness",
-    "tests/common/test_dopri5.cpp": "ex 4.3: dopri5.f's step-size formula written out",
+    "tests/common/ode/test_dopri5.cpp": "ex 4.3: dopri5.f's step-size formula written out",
     "tests/bench/bench_adaptive.cpp": "the benchmark of the production DOPRI5",
 }
 BANNER = """

@@ -70,7 +70,7 @@ PY
 cd "$kit_root"
 ./kit student-edition "$work/bare" --without-production >/dev/null
 for file in common/include/kit/ode/dopri5.hpp common/include/kit/ode/pi_step_control.hpp \
-            common/include/kit/ode/dopri5_work_method.hpp tests/common/test_dopri5.cpp tests/bench/bench_adaptive.cpp; do
+            common/include/kit/ode/dopri5_work_method.hpp tests/common/ode/test_dopri5.cpp tests/bench/bench_adaptive.cpp; do
   [ ! -e "$work/bare/$file" ] || { echo "FAILED: the edition without production code holds $file"; exit 1; }
 done
 grep -q "runs on your own ex 4.2 and ex 4.3" "$work/bare/README.md" || { echo "FAILED: its README does not say so"; exit 1; }
@@ -86,7 +86,7 @@ if [ -n "$libraries" ]; then
   others=$(grep -v "^Only in $kit_root/common" <<<"$differences" || true)
   named=$(printf '%s\n' $removed | sed 's/[.]/[.]/g' | paste -sd'|')
   lessons_read=$(ninja -C "$(dirname "$libraries")" -t deps | awk '/^[^ ]/ { object = $1 } /^ / { print object, $1 }' |
-    grep "^chapters/CMakeFiles/kit_lessons[.]dir/" | grep -E "/kit/($named)\$" || true)
+    grep "^chapters/CMakeFiles/kit_lessons[.]dir/" | grep -E "/kit/.*/($named)\$" || true)
   if [ -n "$removed" ] && [ -z "$others" ] && ! grep -rqE "^[[:space:]]*#.*($named)" common && [ -z "$lessons_read" ] &&
      diff -rq -x __pycache__ "$kit_root/chapters" chapters >/dev/null; then
     echo "the edition without production code links the kit's libraries: it leaves out only" $removed
@@ -118,7 +118,7 @@ waits = {entry["reason"].split()[1] for entry in s.get("skipped", [])}
 print(f"without production, nothing solved: chapter 4 waits for {sorted(waits)}")
 sys.exit(0 if "4.2" in waits and "GSL rkck" in s["work_precision"] else 1)
 PY
-# Its unit tests are the kit's less tests/common/test_dopri5.cpp. When it links the kit's library,
+# Its unit tests are the kit's less tests/common/ode/test_dopri5.cpp. When it links the kit's library,
 # its tests/ is the kit's less that file and the DOPRI5 benchmark, and ninja's record of the kit's
 # test_common shows that no other object of it read a removed header, solutions/ or exercises/,
 # and `nm` that none needs a symbol test_dopri5.o defines, the edition's test_common is the kit's
@@ -127,17 +127,16 @@ reuse_tests=""
 if [ -n "$bare_library" ] && [ -n "$programs" ]; then
   kit_build=$(dirname "$programs")
   objects="$kit_build/tests/CMakeFiles/test_common.dir/common"
+  dopri5_object="$objects/ode/test_dopri5.cpp.o"
   tests_differences=$(diff -rq -x __pycache__ "$kit_root/tests" tests || true)
-  tests_others=$(grep -vE "^Only in $kit_root/tests/(common: test_dopri5[.]cpp|bench: bench_adaptive[.]cpp)\$" \
+  tests_others=$(grep -vE "^Only in $kit_root/tests/(common/ode: test_dopri5[.]cpp|bench: bench_adaptive[.]cpp)\$" \
                  <<<"$tests_differences" || true)
-  if [ -z "$tests_others" ] && grep -q "test_dopri5[.]cpp" <<<"$tests_differences" && [ -f "$objects/test_dopri5.cpp.o" ]; then
+  if [ -z "$tests_others" ] && grep -q "test_dopri5[.]cpp" <<<"$tests_differences" && [ -f "$dopri5_object" ]; then
     read_removed=$(ninja -C "$kit_build" -t deps | awk '/^[^ ]/ { object = $1 } /^ / { print object, $1 }' |
       grep "^tests/CMakeFiles/test_common[.]dir/" | grep -v "/test_dopri5[.]cpp[.]o" |
-      grep -E "/(solutions|exercises)/|/kit/($named)\$" || true)
-    strong=$(nm -g --defined-only "$objects/test_dopri5.cpp.o" | awk '$2 ~ /^[TDBR]$/ { print $3 }' | sort -u)
-    wanted=$(for object in "$objects"/*.o; do
-               [ "$object" = "$objects/test_dopri5.cpp.o" ] || nm -u "$object"
-             done | awk '{ print $NF }' | sort -u)
+      grep -E "/(solutions|exercises)/|/kit/.*/($named)\$" || true)
+    strong=$(nm -g --defined-only "$dopri5_object" | awk '$2 ~ /^[TDBR]$/ { print $3 }' | sort -u)
+    wanted=$(find "$objects" -name '*.o' ! -path "$dopri5_object" -exec nm -u {} + | awk '{ print $NF }' | sort -u)
     needed=$(comm -12 <(printf '%s\n' "$strong") <(printf '%s\n' "$wanted") | grep . || true)
     if [ -z "$read_removed" ] && [ -z "$needed" ]; then
       reuse_tests=yes

@@ -7,7 +7,7 @@
 // table over k, the second from a quadratic through z^p at the ends and middle of one of 256
 // slices of [1, 2). On a slice of width w = 1/256 the interpolation error is at most
 // |p(p−1)(p−2)|·(w/2)³/(9√3) relative: 9.2e-11 for DOPRI5's p = −0.085, 2.5e-10 for
-// |p| ≤ 0.2, 2.9e-9 for |p| ≤ 1 (tests/common/test_fast_power.cpp measures these).
+// |p| ≤ 0.2, 2.9e-9 for |p| ≤ 1 (tests/common/base/test_fast_power.cpp measures these).
 // Outside [2^−128, 2^128) (and for x ≤ 0, Inf or NaN) it falls back to std::pow. The exponent
 // must satisfy |p| ≤ 8, so that 2^(p·k) stays finite over the table.
 #include <array>

@@ -9,7 +9,7 @@
 //     critical path, and h is folded into it and into the clamp bounds, so that after the
 //     power only one multiply, one max and one min remain.
 // The step sizes agree with dopri5.f's formula to about 1e-10 relative (tested to 2e-10 in
-// tests/common/test_dopri5.cpp), and DOPRI5 keeps dopri5.f's counts on Arenstorf at the three
+// tests/common/ode/test_dopri5.cpp), and DOPRI5 keeps dopri5.f's counts on Arenstorf at the three
 // published tolerances.
 #include <algorithm>
 #include <cmath>

@@ -17,7 +17,7 @@
 namespace {
 
 const std::filesystem::path scene_dir =
-    std::filesystem::path(__FILE__).parent_path() / "../../chapters/06-cloth-explicit/scenes";
+    std::filesystem::path(__FILE__).parent_path() / "../../../chapters/06-cloth-explicit/scenes";
 
 /// The message of the UsageError that parsing `text` as "scenes/test.toml" throws.
 std::string error_of(std::string_view text) {
