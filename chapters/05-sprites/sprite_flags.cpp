@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <kit/app/scene_flag.hpp>
 #include <kit/base/usage.hpp>
@@ -14,9 +15,8 @@
 namespace kit {
 namespace {
 Integrator integrator_named(const std::string& name) {
-  for (Integrator i : all_integrators)
-    if (flag_name(i) == name) return i;
-  throw UsageError(fmt::format("--integrator: '{}' is not one of euler, symplectic, midpoint, exact", name));
+  if (const auto integrator = integrator_names.parse(name)) return *integrator;
+  throw UsageError(fmt::format("--integrator: '{}' is not one of {}", name, fmt::join(integrator_names.flags(), ", ")));
 }
 
 }  // namespace
@@ -30,7 +30,7 @@ void add_sprite_flags(ChapterApp& app, SpriteFlags& f) {
   app.add_count("--seed", f.seed, "random seed: the same seed gives the same frames and data", 0, LONG_MAX);
   app.add_choice("--integrator", f.integrator,
                  "euler, symplectic, midpoint or exact (the closed form of gravity plus drag)",
-                 {"euler", "symplectic", "midpoint", "exact"});
+                 integrator_names.flags());
   app.add_count("--width", f.width, "frame width [px]", 16, 7680);
   app.add_count("--height", f.height, "frame height [px]", 16, 4320);
   app.add_count("--max-particles", f.max_particles, "particles alive at most (default: the scene's)", 1,

@@ -7,19 +7,9 @@
 #include <fmt/format.h>
 
 namespace kit {
-namespace {
-
-std::optional<ImplicitMethod> implicit_named(const std::string& name) {
-  for (const ImplicitMethod m : all_implicit_methods)
-    if (name == flag_name(m)) return m;
-  return std::nullopt;
-}
-
-}  // namespace
 
 void add_implicit_cloth_flags(ChapterApp& app, ClothFlags& cloth, ImplicitFlags& f) {
-  std::vector<std::string> implicit;
-  for (const ImplicitMethod m : all_implicit_methods) implicit.emplace_back(flag_name(m));
+  const std::vector<std::string> implicit = implicit_method_names.flags();
   cloth.scene = "drape";  // chapter 7's default scene, before --scene records its default
   add_cloth_flags(app, cloth, implicit);
   app.add_divergence_flag();
@@ -27,7 +17,7 @@ void add_implicit_cloth_flags(ChapterApp& app, ClothFlags& cloth, ImplicitFlags&
   app.add_choice("--solver", f.solver,
                  "linear solver: cg (Eigen, diagonal preconditioner), pcg (ex 7.3, filtered) or mg "
                  "(filtered, multigrid preconditioner: the fast one)",
-                 {"cg", "pcg", "mg"});
+                 implicit_solver_names.flags());
   app.add_real("--cg-tol", f.cg_tol, "relative residual of each linear solve", between(1e-14, 0.5));
   app.add_count("--iterations", f.iterations,
                 "the scene run's Liu local/global iterations, or Newton's most (the fixed experiments use 10)", 1, 1000);
@@ -37,19 +27,18 @@ void add_implicit_cloth_flags(ChapterApp& app, ClothFlags& cloth, ImplicitFlags&
 
 ClothScene apply_implicit_cloth_flags(ClothScene scene, const ClothFlags& cloth) {
   ClothFlags explicit_only = cloth;
-  if (implicit_named(cloth.integrator)) explicit_only.integrator.clear();
+  if (implicit_method_names.parse(cloth.integrator)) explicit_only.integrator.clear();
   return apply_cloth_flags(std::move(scene), explicit_only);
 }
 
 ClothRunOptions implicit_cloth_run(const ClothScene& scene, const ClothFlags& cloth, const ImplicitFlags& f,
                                    ImplicitKernels kernels) {
   ClothRunOptions run = cloth_run_options(scene);
-  if (cloth.integrator.empty() || implicit_named(cloth.integrator)) {
-    run.implicit = cloth.integrator.empty() ? ImplicitMethod::linearised : *implicit_named(cloth.integrator);
+  if (const auto implicit = implicit_method_names.parse(cloth.integrator); cloth.integrator.empty() || implicit) {
+    run.implicit = implicit.value_or(ImplicitMethod::linearised);
     if (!(cloth.dt > 0)) run.dt = implicit_default_dt;
   }
-  for (const ImplicitSolver solver : all_implicit_solvers)
-    if (f.solver == flag_name(solver)) run.implicit_settings.solver = solver;
+  run.implicit_settings.solver = implicit_solver_names.parse(f.solver).value_or(run.implicit_settings.solver);
   run.implicit_settings.cg_tolerance = f.cg_tol;
   run.implicit_settings.iterations = int(f.iterations);
   run.implicit_settings.clamp = !f.no_clamp;

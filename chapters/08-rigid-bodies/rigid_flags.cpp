@@ -17,11 +17,6 @@ namespace {
 
 constexpr double max_spin = 1e4;  // [rad/s]: about 1600 turns a second, beyond any animated body
 
-std::vector<std::string> integrator_flag_names() {
-  std::vector<std::string> names;
-  for (RotationIntegrator i : rotation_integrators()) names.push_back(flag_name(i));
-  return names;
-}
 
 Vec3 parse_omega(const std::string& text) {
   const auto refuse = [&](const std::string& why) {
@@ -54,9 +49,8 @@ Vec3 parse_omega(const std::string& text) {
 }  // namespace
 
 void add_rigid_flags(ChapterApp& app, RigidFlags& f) {
-  app.add_choice("--body", f.body, "the free body: t-handle, box or cylinder (the drops use the box)",
-                 {"t-handle", "box", "cylinder"});
-  const auto names = integrator_flag_names();
+  app.add_choice("--body", f.body, "the free body: t-handle, box or cylinder (the drops use the box)", shape_names());
+  const auto names = rotation_integrator_names.flags();
   app.add_choice("--integrator", f.integrator,
                  fmt::format("the scene runs' rotation integrator: {}", fmt::join(names, ", ")), names);
   app.add_real("--dt", f.dt, "time step h [s] of the runs at one step", positive(0.1));
@@ -74,7 +68,8 @@ void add_rigid_flags(ChapterApp& app, RigidFlags& f) {
 RigidSetup rigid_setup(const RigidFlags& flags) {
   RigidSetup setup;
   setup.shape = shape_named(flags.body);
-  setup.integrator = *rotation_integrator_named(flags.integrator);  // CLI11 checked the name
+  // add_choice let only the table's names through.
+  setup.integrator = rotation_integrator_names.parse(flags.integrator).value_or(setup.integrator);
   setup.omega0 = parse_omega(flags.omega0);
   setup.contact.restitution = flags.restitution;
   setup.contact.friction = flags.friction;

@@ -31,7 +31,7 @@ void print_angular_velocity_check(Report& report, const RigidKernels& kernels, c
 std::vector<RotationIntegrator> available_rotation_integrators(Report& report, const RigidKernels& kernels,
                                                                const RigidShape& shape) {
   std::vector<RotationIntegrator> available;
-  for (RotationIntegrator integrator : rotation_integrators()) {
+  for (RotationIntegrator integrator : rotation_integrators) {
     RigidState probe = spinning_state(shape, Vec3::Zero(), Vec3(1, 1, 1));
     if (report.attempt(display_name(integrator), [&] { rotation_step(kernels, integrator, shape, probe, 1e-3); }))
       available.push_back(integrator);

@@ -39,26 +39,6 @@ double cantilever_first_frequency(const FemMaterial& material) {
   return beta_l * beta_l * std::sqrt(bending / (mass_per_length * std::pow(cantilever_length, 4)));
 }
 
-const char* solver_name(TipSolver solver) {
-  switch (solver) {
-    case TipSolver::newton:
-      return "static Newton";
-    case TipSolver::explicit_relaxation:
-      return "explicit relaxation";
-    case TipSolver::implicit_relaxation:
-      return "implicit relaxation";
-  }
-  return "?";
-}
-
-const char* mesh_name(MeshKind kind) {
-  return kind == MeshKind::regular ? "regular" : "irregular";
-}
-
-const char* integrator_name(TimeIntegrator integrator) {
-  return integrator == TimeIntegrator::explicit_euler ? "explicit" : "implicit";
-}
-
 TriangleMesh continuum_mesh(double width, double height, int nx, int ny, MeshKind kind) {
   return kind == MeshKind::regular ? regular_rectangle_mesh(width, height, nx, ny, CellDiagonal::alternating)
                                    : irregular_rectangle_mesh(width, height, nx, ny, 9);

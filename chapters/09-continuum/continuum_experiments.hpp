@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/fem/fem_body.hpp>
 #include <kit/fem/fem_integrators.hpp>
 #include <kit/fem/fem_statics.hpp>
@@ -34,7 +35,13 @@ enum class TipSolver {
   explicit_relaxation,  ///< symplectic Euler at 0.9 of the step limit, damped at c = 2ω1, for 20/ω1
   implicit_relaxation,  ///< implicit Euler, 60 steps of 1/(2ω1) with the same damping, PCG (ex 7.3)
 };
-const char* solver_name(TipSolver solver);
+inline constexpr auto tip_solver_names = enum_names<TipSolver>({
+    {TipSolver::newton, "newton", "static Newton"},
+    {TipSolver::explicit_relaxation, "explicit-relaxation", "explicit relaxation"},
+    {TipSolver::implicit_relaxation, "implicit-relaxation", "implicit relaxation"},
+});
+static_assert(tip_solver_names.in_order());
+inline const char* solver_name(TipSolver solver) { return tip_solver_names.display(solver); }
 
 struct TipRun {
   FemModel model = FemModel::stvk;
@@ -83,13 +90,25 @@ std::vector<TurnedElement> turn_sweep(const FemMaterial& material, const Continu
 inline constexpr double plate_side = 0.5;                     ///< [m]
 inline constexpr double plate_spin = 3.14159265358979323846;  ///< ω [rad/s]: half a turn a second
 enum class MeshKind { regular, irregular };
-const char* mesh_name(MeshKind kind);
+/// Their names in --mesh and summaries.
+inline constexpr auto mesh_kind_names = enum_names<MeshKind>({
+    {MeshKind::regular, "regular", "regular"},
+    {MeshKind::irregular, "irregular", "irregular"},
+});
+static_assert(mesh_kind_names.in_order());
+inline const char* mesh_name(MeshKind kind) { return mesh_kind_names.flag(kind); }
 /// The rectangle [0, width] × [0, height] in n_x × n_y cells: alternating diagonals, or the
 /// irregular mesh of the same boundary nodes (seed 9).
 TriangleMesh continuum_mesh(double width, double height, int nx, int ny, MeshKind kind);
 
 enum class TimeIntegrator { explicit_euler, implicit_euler };
-const char* integrator_name(TimeIntegrator integrator);
+/// Their names in --integrator and summaries.
+inline constexpr auto time_integrator_names = enum_names<TimeIntegrator>({
+    {TimeIntegrator::explicit_euler, "explicit", "explicit (symplectic Euler)"},
+    {TimeIntegrator::implicit_euler, "implicit", "implicit Euler"},
+});
+static_assert(time_integrator_names.in_order());
+inline const char* integrator_name(TimeIntegrator integrator) { return time_integrator_names.flag(integrator); }
 struct PlateSample {
   double t = 0;       ///< [s]
   double strain = 0;  ///< the largest Green strain of the current shape, whatever the model

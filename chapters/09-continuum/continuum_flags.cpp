@@ -15,11 +15,10 @@ void add_continuum_flags(ChapterApp& app, ContinuumFlags& f) {
   app.add_real("--density", f.density, "density ρ [kg/m³]", between(1, 1e5));
   app.add_count("--resolution", f.resolution, "the spinning plate's cells per side", 2, 128);
   app.add_choice("--mesh", f.mesh, "the plate's mesh: regular (alternating diagonals) or irregular",
-                 {"regular", "irregular"});
-  app.add_choice("--model", f.model, "the plate's model: linear, stvk or springs",
-                 {"linear", "stvk", "springs"});
-  app.add_choice("--integrator", f.integrator,
-                 "the plate's integrator: explicit (symplectic Euler) or implicit", {"explicit", "implicit"});
+                 mesh_kind_names.flags());
+  app.add_choice("--model", f.model, "the plate's model: linear, stvk or springs", fem_model_names.flags());
+  app.add_choice("--integrator", f.integrator, "the plate's integrator: explicit (symplectic Euler) or implicit",
+                 time_integrator_names.flags());
   app.add_real("--dt", f.dt, "the plate's time step h [s]; 0: 0.9 of the explicit limit, or 1 ms implicit",
                between(0, 0.1));
   app.add_real("--t-end", f.t_end, "how long the plate spins [s]", positive(100));
@@ -29,9 +28,10 @@ void add_continuum_flags(ChapterApp& app, ContinuumFlags& f) {
 ContinuumSetup continuum_setup(const ContinuumFlags& flags) {
   ContinuumSetup s;
   s.material = {flags.young, flags.poisson, flags.density, 0.01};
-  s.model = flags.model == "linear" ? FemModel::linear : flags.model == "springs" ? FemModel::springs : FemModel::stvk;
-  s.mesh = flags.mesh == "irregular" ? MeshKind::irregular : MeshKind::regular;
-  s.integrator = flags.integrator == "implicit" ? TimeIntegrator::implicit_euler : TimeIntegrator::explicit_euler;
+  // add_choice let only the tables' names through: each finds its value.
+  s.model = fem_model_names.parse(flags.model).value_or(s.model);
+  s.mesh = mesh_kind_names.parse(flags.mesh).value_or(s.mesh);
+  s.integrator = time_integrator_names.parse(flags.integrator).value_or(s.integrator);
   s.resolution = static_cast<int>(flags.resolution);
   s.dt = flags.dt;
   s.t_end = flags.t_end;

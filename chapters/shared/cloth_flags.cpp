@@ -15,16 +15,10 @@
 namespace kit {
 namespace {
 
-std::string integrator_names() {
-  std::vector<std::string> names;
-  for (ClothIntegrator i : all_cloth_integrators) names.emplace_back(flag_name(i));
-  return fmt::format("{}", fmt::join(names, ", "));
-}
-
 ClothIntegrator integrator_named(const std::string& name) {
-  for (ClothIntegrator i : all_cloth_integrators)
-    if (name == flag_name(i)) return i;
-  throw UsageError(fmt::format("--integrator: '{}' is not one of {}", name, integrator_names()));
+  if (const auto integrator = cloth_integrator_names.parse(name)) return *integrator;
+  throw UsageError(
+      fmt::format("--integrator: '{}' is not one of {}", name, fmt::join(cloth_integrator_names.flags(), ", ")));
 }
 
 nlohmann::json vector_json(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
@@ -37,8 +31,7 @@ void add_cloth_flags(ChapterApp& app, ClothFlags& f, const std::vector<std::stri
                   "scene: a name under chapters/06-cloth-explicit/scenes/ or a .toml path")
       ->type_name("NAME|FILE")
       ->capture_default_str();
-  std::vector<std::string> names;
-  for (ClothIntegrator i : all_cloth_integrators) names.emplace_back(flag_name(i));
+  std::vector<std::string> names = cloth_integrator_names.flags();
   names.insert(names.end(), more_integrators.begin(), more_integrators.end());
   const std::string default_one = more_integrators.empty() ? "the scene's" : more_integrators.front();
   app.add_choice("--integrator", f.integrator,

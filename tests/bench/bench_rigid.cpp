@@ -349,7 +349,7 @@ int main() {
       omega0.z(), motion.energy, motion.momentum, period, motion.modulus(), axis_name, period / 4, expected, t_end);
 
   // --- 1 ------------------------------------------------------------------------------------------
-  const auto& integrators = kit::rotation_integrators();
+  const auto& integrators = kit::rotation_integrators;
   std::vector<double> bench_ns;
   for (const auto integrator : integrators)
     bench_ns.push_back(1e9 * kit_cost(setup, integrator, h_bench, bench_steps));

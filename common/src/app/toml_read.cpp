@@ -63,8 +63,12 @@ std::string show(const toml::node& n) {
 }
 
 std::string join(std::initializer_list<std::string_view> words) {
+  return join(std::vector<std::string>(words.begin(), words.end()));
+}
+
+std::string join(const std::vector<std::string>& words) {
   std::string s;
-  for (auto w : words) s += (s.empty() ? "" : ", ") + std::string(w);
+  for (const auto& w : words) s += (s.empty() ? "" : ", ") + w;
   return s;
 }
 
@@ -134,8 +138,7 @@ bool Reader::boolean(const toml::node& n, const std::string& key) const {
   return b->get();
 }
 
-std::size_t Reader::choice(const toml::node& n, const std::string& key,
-                           std::initializer_list<std::string_view> names) const {
+std::size_t Reader::choice(const toml::node& n, const std::string& key, const std::vector<std::string>& names) const {
   const std::string s = string(n, key);
   const auto it = std::find(names.begin(), names.end(), s);
   if (it == names.end()) bad(n, key, "must be one of " + join(names));
@@ -194,8 +197,7 @@ std::optional<bool> Section::boolean(std::string_view k) const {
   if (const auto* n = find(k)) return r_.boolean(*n, key(k));
   return std::nullopt;
 }
-std::optional<std::size_t> Section::choice(std::string_view k,
-                                           std::initializer_list<std::string_view> names) const {
+std::optional<std::size_t> Section::choice(std::string_view k, const std::vector<std::string>& names) const {
   if (const auto* n = find(k)) return r_.choice(*n, key(k), names);
   return std::nullopt;
 }

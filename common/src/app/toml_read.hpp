@@ -14,9 +14,11 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include <toml++/toml.h>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/base/real_range.hpp>
 
 namespace kit::scene_toml {
@@ -33,6 +35,7 @@ std::string_view kind(const toml::node& n);
 std::string show(const toml::node& n);
 /// "a, b, c".
 std::string join(std::initializer_list<std::string_view> words);
+std::string join(const std::vector<std::string>& words);
 
 /// The whole file as text; UsageError "cannot read scene file ..." when it cannot be read.
 std::string read_text(const std::filesystem::path& file);
@@ -56,8 +59,7 @@ class Reader {
   std::string string(const toml::node& n, const std::string& key) const;
   bool boolean(const toml::node& n, const std::string& key) const;
   /// Index of the string's value in `names`.
-  std::size_t choice(const toml::node& n, const std::string& key,
-                     std::initializer_list<std::string_view> names) const;
+  std::size_t choice(const toml::node& n, const std::string& key, const std::vector<std::string>& names) const;
   /// Three numbers, each in `range`; `components` names them for the message ("x, y, z").
   std::array<double, 3> vec3(const toml::node& n, const std::string& key, const RealRange& range,
                              std::string_view components) const;
@@ -92,7 +94,13 @@ class Section {
   std::optional<long> integer(std::string_view k, long long lo, long long hi) const;
   std::optional<std::string> string(std::string_view k) const;
   std::optional<bool> boolean(std::string_view k) const;
-  std::optional<std::size_t> choice(std::string_view k, std::initializer_list<std::string_view> names) const;
+  std::optional<std::size_t> choice(std::string_view k, const std::vector<std::string>& names) const;
+  /// The value of an enumeration its table names (kit/base/enum_names.hpp).
+  template <typename Enum, std::size_t N>
+  std::optional<Enum> choice(std::string_view k, const EnumNames<Enum, N>& names) const {
+    if (const auto i = choice(k, names.flags())) return names.rows[*i].value;
+    return std::nullopt;
+  }
   std::optional<std::array<double, 3>> vec3(std::string_view k, const RealRange& range,
                                             std::string_view components = "x, y, z") const;
   /// The sub-table at `k`, or nullopt when the file leaves it out.

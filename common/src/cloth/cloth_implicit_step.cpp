@@ -10,42 +10,6 @@
 
 namespace kit {
 
-const char* flag_name(ImplicitMethod method) {
-  switch (method) {
-    case ImplicitMethod::linearised: return "implicit-euler";
-    case ImplicitMethod::newton: return "newton";
-    case ImplicitMethod::liu: return "liu";
-  }
-  return "?";
-}
-
-const char* display_name(ImplicitMethod method) {
-  switch (method) {
-    case ImplicitMethod::linearised: return "implicit Euler (linearised)";
-    case ImplicitMethod::newton: return "implicit Euler (Newton)";
-    case ImplicitMethod::liu: return "Liu et al. 2013";
-  }
-  return "?";
-}
-
-const char* flag_name(ImplicitSolver solver) {
-  switch (solver) {
-    case ImplicitSolver::cg: return "cg";
-    case ImplicitSolver::pcg: return "pcg";
-    case ImplicitSolver::mg: return "mg";
-  }
-  return "?";
-}
-
-const char* display_name(ImplicitSolver solver) {
-  switch (solver) {
-    case ImplicitSolver::cg: return "Eigen CG";
-    case ImplicitSolver::pcg: return "filtered PCG";
-    case ImplicitSolver::mg: return "multigrid PCG";
-  }
-  return "?";
-}
-
 ImplicitWork& ImplicitWork::operator+=(const ImplicitWork& o) {
   steps += o.steps, solves += o.solves, cg_iterations += o.cg_iterations;
   max_cg_iterations = std::max(max_cg_iterations, o.max_cg_iterations);

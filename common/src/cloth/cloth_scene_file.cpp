@@ -167,10 +167,7 @@ void read_camera(const Section& s, ClothCamera& camera) {
 
 void read_run(const Section& s, ClothScene& scene) {
   s.only({"integrator", "dt", "t_end", "frames"});
-  if (const auto i =
-          s.choice("integrator", {flag_name(all_cloth_integrators[0]), flag_name(all_cloth_integrators[1]),
-                                  flag_name(all_cloth_integrators[2]), flag_name(all_cloth_integrators[3])}))
-    scene.integrator = all_cloth_integrators[*i];
+  scene.integrator = s.choice("integrator", cloth_integrator_names).value_or(scene.integrator);
   scene.dt = s.real("dt", positive(1)).value_or(scene.dt);
   scene.t_end = s.real("t_end", positive(1e4)).value_or(scene.t_end);
   scene.frames = int(s.integer("frames", 1, 20'000).value_or(scene.frames));

@@ -10,15 +10,6 @@
 
 namespace kit {
 
-const char* model_name(FemModel model) {
-  switch (model) {
-    case FemModel::linear: return "linear";
-    case FemModel::stvk: return "stvk";
-    case FemModel::springs: return "springs";
-  }
-  return "?";
-}
-
 namespace {
 
 void require_positive(double value, const char* what) {

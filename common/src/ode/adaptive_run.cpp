@@ -6,17 +6,6 @@
 
 namespace kit {
 
-const char* name(RunStatus status) {
-  switch (status) {
-    case RunStatus::finished: return "finished";
-    case RunStatus::trapped: return "trapped";
-    case RunStatus::step_too_small: return "step too small";
-    case RunStatus::too_many_steps: return "too many steps";
-    case RunStatus::unreachable: return "unreachable tolerance";
-  }
-  return "?";
-}
-
 std::string unreachable_tolerance(double rtol, double atol) {
   const double floor = 10 * std::numeric_limits<double>::epsilon();
   if (rtol >= floor && atol > 0) return {};

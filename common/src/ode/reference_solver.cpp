@@ -10,17 +10,6 @@
 
 namespace kit {
 
-const char* name(GslStepper stepper) {
-  switch (stepper) {
-    case GslStepper::rk8pd: return "rk8pd";
-    case GslStepper::rkck: return "rkck";
-    case GslStepper::rkf45: return "rkf45";
-    case GslStepper::rk4: return "rk4";
-    case GslStepper::rk2: return "rk2";
-  }
-  return "?";
-}
-
 namespace {
 const gsl_odeiv2_step_type* step_type(GslStepper stepper) {
   switch (stepper) {

@@ -4,28 +4,6 @@
 
 namespace kit {
 
-const char* name(Scheme s) {
-  switch (s) {
-    case Scheme::explicit_euler: return "explicit Euler";
-    case Scheme::implicit_euler: return "implicit Euler";
-    case Scheme::symplectic_euler: return "symplectic Euler";
-    case Scheme::midpoint: return "midpoint RK2";
-    case Scheme::rk4: return "RK4";
-  }
-  return "?";
-}
-
-const char* key(Scheme s) {
-  switch (s) {
-    case Scheme::explicit_euler: return "explicit_euler";
-    case Scheme::implicit_euler: return "implicit_euler";
-    case Scheme::symplectic_euler: return "symplectic_euler";
-    case Scheme::midpoint: return "midpoint";
-    case Scheme::rk4: return "rk4";
-  }
-  return "?";
-}
-
 int order(Scheme s) {
   switch (s) {
     case Scheme::midpoint: return 2;

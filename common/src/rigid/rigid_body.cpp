@@ -5,6 +5,7 @@
 
 #include <Eigen/SVD>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace kit {
 namespace {
@@ -86,11 +87,31 @@ RigidShape t_handle_shape(double mass) {
   return shape;
 }
 
+namespace {
+
+// The bodies of chapter 8 by name: the one table --body, its help and shape_named read.
+struct NamedShape {
+  const char* name;
+  RigidShape (*make)();
+};
+const NamedShape named_shapes[] = {
+    {"t-handle", [] { return t_handle_shape(0.5); }},
+    {"box", [] { return box_shape(1.0, Vec3(0.4, 0.2, 0.3)); }},
+    {"cylinder", [] { return cylinder_shape(1.0, 0.1, 0.4); }},
+};
+
+}  // namespace
+
+std::vector<std::string> shape_names() {
+  std::vector<std::string> names;
+  for (const auto& shape : named_shapes) names.emplace_back(shape.name);
+  return names;
+}
+
 RigidShape shape_named(const std::string& name) {
-  if (name == "box") return box_shape(1.0, Vec3(0.4, 0.2, 0.3));
-  if (name == "cylinder") return cylinder_shape(1.0, 0.1, 0.4);
-  if (name == "t-handle") return t_handle_shape(0.5);
-  throw std::invalid_argument(fmt::format("body '{}': expected box, cylinder or t-handle", name));
+  for (const auto& shape : named_shapes)
+    if (name == shape.name) return shape.make();
+  throw std::invalid_argument(fmt::format("body '{}': expected {}", name, fmt::join(shape_names(), ", ")));
 }
 
 RigidState spinning_state(const RigidShape& shape, const Vec3& x, const Vec3& omega_body) {

@@ -1,51 +1,19 @@
 #include <kit/rigid/rigid_stepper.hpp>
 
-#include <array>
-
 #include <kit/rigid/rigid_integrators.hpp>
 
 namespace kit {
-namespace {
 
-struct IntegratorInfo {
-  RotationIntegrator integrator;
-  const char* flag;
-  const char* display;
-  const char* exercises;
-};
-
-constexpr std::array<IntegratorInfo, 6> integrator_table{{
-    {RotationIntegrator::euler_matrix, "euler-R", "explicit Euler on R", "ex 8.3, 8.1"},
-    {RotationIntegrator::euler_polar, "euler-R-polar", "Euler on R + polar", "ex 8.3, 8.1"},
-    {RotationIntegrator::euler_quaternion, "euler-q", "Euler on q", "ex 8.3, 8.2"},
-    {RotationIntegrator::exponential_map, "exp-map", "exponential map", "ex 8.3, 8.4"},
-    {RotationIntegrator::midpoint, "midpoint", "implicit midpoint", ""},
-    {RotationIntegrator::rk4, "rk4", "RK4 on (q, L_b)", ""},
-}};
-
-const IntegratorInfo& info(RotationIntegrator integrator) {
-  return integrator_table[static_cast<std::size_t>(integrator)];
-}
-
-}  // namespace
-
-const std::vector<RotationIntegrator>& rotation_integrators() {
-  static const std::vector<RotationIntegrator> all = [] {
-    std::vector<RotationIntegrator> v;
-    for (const auto& entry : integrator_table) v.push_back(entry.integrator);
-    return v;
-  }();
-  return all;
-}
-
-std::string flag_name(RotationIntegrator integrator) { return info(integrator).flag; }
-std::string display_name(RotationIntegrator integrator) { return info(integrator).display; }
-std::string exercises_of(RotationIntegrator integrator) { return info(integrator).exercises; }
-
-std::optional<RotationIntegrator> rotation_integrator_named(const std::string& name) {
-  for (const auto& entry : integrator_table)
-    if (name == entry.flag) return entry.integrator;
-  return std::nullopt;
+std::string exercises_of(RotationIntegrator integrator) {
+  switch (integrator) {
+    case RotationIntegrator::euler_matrix:
+    case RotationIntegrator::euler_polar: return "ex 8.3, 8.1";
+    case RotationIntegrator::euler_quaternion: return "ex 8.3, 8.2";
+    case RotationIntegrator::exponential_map: return "ex 8.3, 8.4";
+    case RotationIntegrator::midpoint:
+    case RotationIntegrator::rk4: break;
+  }
+  return "";
 }
 
 bool rotation_step(const RigidKernels& kernels, RotationIntegrator integrator, const RigidShape& shape,

@@ -7,26 +7,6 @@
 
 namespace kit {
 
-std::string_view flag_name(Integrator i) {
-  switch (i) {
-    case Integrator::explicit_euler: return "euler";
-    case Integrator::symplectic_euler: return "symplectic";
-    case Integrator::midpoint: return "midpoint";
-    case Integrator::exact: return "exact";
-  }
-  return "?";
-}
-
-std::string_view display_name(Integrator i) {
-  switch (i) {
-    case Integrator::explicit_euler: return "explicit Euler";
-    case Integrator::symplectic_euler: return "symplectic Euler";
-    case Integrator::midpoint: return "midpoint RK2";
-    case Integrator::exact: return "exact (closed form)";
-  }
-  return "?";
-}
-
 int order(Integrator i) {
   switch (i) {
     case Integrator::explicit_euler:

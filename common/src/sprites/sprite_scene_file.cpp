@@ -128,8 +128,7 @@ Emitter read_emitter(const Reader& r, const Section& s, EmitterSource& source) {
   if (name->empty()) r.bad(*s.find("name"), s.key("name"), "must not be empty");
   e.name = *name;
 
-  if (const auto shape = s.choice("shape", {"point", "disc", "sphere", "cone"}))
-    e.shape = static_cast<EmitterShape>(*shape);
+  e.shape = s.choice("shape", emitter_shape_names).value_or(e.shape);
   e.position = s.vec3("position", symmetric(max_coordinate)).value_or(e.position);
   if (const auto axis = s.vec3("axis", symmetric(max_coordinate))) {
     const double norm = std::hypot((*axis)[0], (*axis)[1], (*axis)[2]);
@@ -138,8 +137,7 @@ Emitter read_emitter(const Reader& r, const Section& s, EmitterSource& source) {
   }
   e.radius = s.real("radius", between(0, max_coordinate)).value_or(e.radius);
   if ((e.shape == EmitterShape::disc || e.shape == EmitterShape::sphere) && !(e.radius > 0)) {
-    const char* shape = e.shape == EmitterShape::disc ? "disc" : "sphere";
-    const std::string why = fmt::format("a {} emitter needs a radius > 0 [m]", shape);
+    const std::string why = fmt::format("a {} emitter needs a radius > 0 [m]", emitter_shape_names.flag(e.shape));
     if (const auto* n = s.find("radius")) r.bad(*n, s.key("radius"), why);
     s.missing("radius", why);
   }
@@ -157,7 +155,7 @@ Emitter read_emitter(const Reader& r, const Section& s, EmitterSource& source) {
   e.colour_rate = s.vec3("colour_rate", symmetric(max_rate_of_change), "r, g, b").value_or(e.colour_rate);
   e.alpha_rate = s.real("alpha_rate", symmetric(max_rate_of_change)).value_or(e.alpha_rate);
   e.size_rate = s.real("size_rate", symmetric(max_rate_of_change)).value_or(e.size_rate);
-  if (const auto blend = s.choice("blend", {"over", "additive"})) e.blend = static_cast<Blend>(*blend);
+  e.blend = s.choice("blend", blend_names).value_or(e.blend);
 
   if (const auto texture = s.string("texture")) {
     static constexpr std::array<std::string_view, 4> built_in{"soft", "spark", "flake", "smoke"};

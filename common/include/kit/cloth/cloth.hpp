@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include <kit/base/enum_names.hpp>
+
 namespace kit {
 
 /// Per-node 3-vectors, one column per axis: x, y and z of all nodes are each contiguous (a
@@ -23,9 +25,15 @@ enum class SpringKind : std::uint8_t {
   shear,       ///< the 4 diagonal neighbours: (i±1, j±1)
   bend,        ///< two steps away: (i±2, j), (i, j±2), and with BendLayout::eight also (i±2, j±2)
 };
-inline constexpr std::array<SpringKind, 3> all_spring_kinds{SpringKind::structural, SpringKind::shear,
-                                                            SpringKind::bend};
-const char* spring_kind_name(SpringKind kind);
+/// Their names, in scene files ([springs.shear]), summaries and tables.
+inline constexpr auto spring_kind_names = enum_names<SpringKind>({
+    {SpringKind::structural, "structural", "structural"},
+    {SpringKind::shear, "shear", "shear"},
+    {SpringKind::bend, "bend", "bend"},
+});
+static_assert(spring_kind_names.in_order());
+inline constexpr auto all_spring_kinds = spring_kind_names.all();
+inline const char* spring_kind_name(SpringKind kind) { return spring_kind_names.flag(kind); }
 
 /// ERRATA item 12: the lecture's "8 voisins (bend)". Provot's layout joins each node to the 4
 /// nodes two steps away along the axes; `eight` adds the 4 two-step diagonals.

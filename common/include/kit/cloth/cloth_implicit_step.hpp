@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/cloth/cloth_implicit_matrix.hpp>
 #include <kit/cloth/cloth_multigrid.hpp>
 #include <kit/cloth/cloth_system.hpp>
@@ -22,15 +23,28 @@
 namespace kit {
 
 enum class ImplicitMethod { linearised, newton, liu };
-inline constexpr ImplicitMethod all_implicit_methods[] = {ImplicitMethod::linearised, ImplicitMethod::newton,
-                                                          ImplicitMethod::liu};
-const char* flag_name(ImplicitMethod method);     ///< "implicit-euler", "newton", "liu"
-const char* display_name(ImplicitMethod method);  ///< "implicit Euler (linearised)", ...
+/// Their names in --integrator (beside the explicit ones) and summaries, and in figures.
+inline constexpr auto implicit_method_names = enum_names<ImplicitMethod>({
+    {ImplicitMethod::linearised, "implicit-euler", "implicit Euler (linearised)"},
+    {ImplicitMethod::newton, "newton", "implicit Euler (Newton)"},
+    {ImplicitMethod::liu, "liu", "Liu et al. 2013"},
+});
+static_assert(implicit_method_names.in_order());
+inline constexpr auto all_implicit_methods = implicit_method_names.all();
+inline const char* flag_name(ImplicitMethod method) { return implicit_method_names.flag(method); }
+inline const char* display_name(ImplicitMethod method) { return implicit_method_names.display(method); }
 
 enum class ImplicitSolver { cg, pcg, mg };
-inline constexpr ImplicitSolver all_implicit_solvers[] = {ImplicitSolver::cg, ImplicitSolver::pcg, ImplicitSolver::mg};
-const char* flag_name(ImplicitSolver solver);     ///< "cg", "pcg", "mg"
-const char* display_name(ImplicitSolver solver);  ///< "Eigen CG", "filtered PCG", "multigrid PCG"
+/// Their names in --solver and summaries, and in figures.
+inline constexpr auto implicit_solver_names = enum_names<ImplicitSolver>({
+    {ImplicitSolver::cg, "cg", "Eigen CG"},
+    {ImplicitSolver::pcg, "pcg", "filtered PCG"},
+    {ImplicitSolver::mg, "mg", "multigrid PCG"},
+});
+static_assert(implicit_solver_names.in_order());
+inline constexpr auto all_implicit_solvers = implicit_solver_names.all();
+inline const char* flag_name(ImplicitSolver solver) { return implicit_solver_names.flag(solver); }
+inline const char* display_name(ImplicitSolver solver) { return implicit_solver_names.display(solver); }
 /// True when the solver holds pins and contacts with Baraff & Witkin's filters (pcg, mg).
 inline bool filtered(ImplicitSolver solver) { return solver != ImplicitSolver::cg; }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/cloth/cloth.hpp>
 
 namespace kit {
@@ -38,12 +39,18 @@ struct StrainLimit {
 
 /// The explicit integrators of chapter 6.
 enum class ClothIntegrator { explicit_euler, symplectic_euler, midpoint, rk4 };
-inline constexpr ClothIntegrator all_cloth_integrators[] = {
-    ClothIntegrator::explicit_euler, ClothIntegrator::symplectic_euler, ClothIntegrator::midpoint,
-    ClothIntegrator::rk4};
-const char* flag_name(ClothIntegrator integrator);     ///< "explicit-euler", "symplectic-euler", ...
-const char* display_name(ClothIntegrator integrator);  ///< "explicit Euler", ...
-int stages(ClothIntegrator integrator);                ///< force evaluations per step
+/// Their names in --integrator, scene files ([run] integrator) and summaries, and in figures.
+inline constexpr auto cloth_integrator_names = enum_names<ClothIntegrator>({
+    {ClothIntegrator::explicit_euler, "explicit-euler", "explicit Euler"},
+    {ClothIntegrator::symplectic_euler, "symplectic-euler", "symplectic Euler"},
+    {ClothIntegrator::midpoint, "midpoint", "midpoint (RK2)"},
+    {ClothIntegrator::rk4, "rk4", "classical RK4"},
+});
+static_assert(cloth_integrator_names.in_order());
+inline constexpr auto all_cloth_integrators = cloth_integrator_names.all();
+inline const char* flag_name(ClothIntegrator integrator) { return cloth_integrator_names.flag(integrator); }
+inline const char* display_name(ClothIntegrator integrator) { return cloth_integrator_names.display(integrator); }
+int stages(ClothIntegrator integrator);  ///< force evaluations per step
 
 /// Where the camera of the rendered frames looks from.
 struct ClothCamera {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/cloth/cloth_implicit_kernels.hpp>
 #include <kit/cloth/spring_force_check.hpp>
 #include <kit/fem/fem_element.hpp>
@@ -19,7 +20,14 @@
 namespace kit {
 
 enum class FemModel { linear, stvk, springs };
-const char* model_name(FemModel model);
+/// Their names in --model, summaries and figures.
+inline constexpr auto fem_model_names = enum_names<FemModel>({
+    {FemModel::linear, "linear", "linear"},
+    {FemModel::stvk, "stvk", "stvk"},
+    {FemModel::springs, "springs", "springs"},
+});
+static_assert(fem_model_names.in_order());
+inline const char* model_name(FemModel model) { return fem_model_names.flag(model); }
 
 /// The sheet's material: Young's modulus [Pa], Poisson's ratio, density [kg/m³], thickness [m].
 struct FemMaterial {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/base/state.hpp>
 
 namespace kit {
@@ -15,7 +16,16 @@ enum class RunStatus {
   too_many_steps,  ///< the step budget ran out
   unreachable,     ///< the tolerance is below what double precision can deliver (rtol < 10 ε)
 };
-const char* name(RunStatus status);
+/// Each status's name in reports and summaries ("step too small").
+inline constexpr auto run_status_names = enum_names<RunStatus>({
+    {RunStatus::finished, "finished", "finished"},
+    {RunStatus::trapped, "trapped", "trapped"},
+    {RunStatus::step_too_small, "step too small", "step too small"},
+    {RunStatus::too_many_steps, "too many steps", "too many steps"},
+    {RunStatus::unreachable, "unreachable tolerance", "unreachable tolerance"},
+});
+static_assert(run_status_names.in_order());
+inline const char* name(RunStatus status) { return run_status_names.flag(status); }
 
 /// Empty when (rtol, atol) can be met in double precision; else why not. An error estimate
 /// sees truncation only: below rtol = 10 ε, round-off in y wins whatever the step (the check of

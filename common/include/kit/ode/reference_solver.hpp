@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/base/state.hpp>
 
 namespace kit {
@@ -19,7 +20,16 @@ class SolverError : public std::runtime_error {
 
 /// The odeiv2 steppers the kit uses, as reference or as peers.
 enum class GslStepper { rk8pd, rkck, rkf45, rk4, rk2 };
-const char* name(GslStepper stepper);
+/// GSL's own names of its steppers.
+inline constexpr auto gsl_stepper_names = enum_names<GslStepper>({
+    {GslStepper::rk8pd, "rk8pd", "rk8pd"},
+    {GslStepper::rkck, "rkck", "rkck"},
+    {GslStepper::rkf45, "rkf45", "rkf45"},
+    {GslStepper::rk4, "rk4", "rk4"},
+    {GslStepper::rk2, "rk2", "rk2"},
+});
+static_assert(gsl_stepper_names.in_order());
+inline const char* name(GslStepper stepper) { return gsl_stepper_names.flag(stepper); }
 
 struct GslOptions {
   GslStepper stepper = GslStepper::rk8pd;

@@ -53,7 +53,9 @@ RigidShape cylinder_shape(double mass, double radius, double height);
 /// the bar: the intermediate axis) and 0.015 M (z) [kg·m²].
 RigidShape t_handle_shape(double mass);
 
-/// The shape named by --body: "box", "cylinder" or "t-handle" (std::invalid_argument otherwise).
+/// The names --body takes: "t-handle", "box", "cylinder".
+std::vector<std::string> shape_names();
+/// The shape of one of those names (std::invalid_argument otherwise).
 RigidShape shape_named(const std::string& name);
 
 /// The state of the lecture: x, R, P, L; `q` is the orientation as a unit quaternion, kept by the

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/rigid/rigid_body.hpp>
 
 namespace kit {
@@ -32,15 +33,21 @@ struct RigidKernels {
 };
 
 enum class RotationIntegrator { euler_matrix, euler_polar, euler_quaternion, exponential_map, midpoint, rk4 };
+/// The --integrator values, and what tables and legends call them.
+inline constexpr auto rotation_integrator_names = enum_names<RotationIntegrator>({
+    {RotationIntegrator::euler_matrix, "euler-R", "explicit Euler on R"},
+    {RotationIntegrator::euler_polar, "euler-R-polar", "Euler on R + polar"},
+    {RotationIntegrator::euler_quaternion, "euler-q", "Euler on q"},
+    {RotationIntegrator::exponential_map, "exp-map", "exponential map"},
+    {RotationIntegrator::midpoint, "midpoint", "implicit midpoint"},
+    {RotationIntegrator::rk4, "rk4", "RK4 on (q, L_b)"},
+});
+static_assert(rotation_integrator_names.in_order());
 
 /// All six, in the order above (the lecture's first).
-const std::vector<RotationIntegrator>& rotation_integrators();
-/// The --integrator value: "euler-R", "euler-R-polar", "euler-q", "exp-map", "midpoint", "rk4".
-std::string flag_name(RotationIntegrator integrator);
-/// What tables and legends call it: "explicit Euler on R", …
-std::string display_name(RotationIntegrator integrator);
-/// The integrator whose flag_name is `name`, or nothing.
-std::optional<RotationIntegrator> rotation_integrator_named(const std::string& name);
+inline constexpr auto rotation_integrators = rotation_integrator_names.all();
+inline std::string flag_name(RotationIntegrator integrator) { return rotation_integrator_names.flag(integrator); }
+inline std::string display_name(RotationIntegrator integrator) { return rotation_integrator_names.display(integrator); }
 /// The exercises it runs ("ex 8.3, 8.1"), or "" for the kit's own.
 std::string exercises_of(RotationIntegrator integrator);
 

@@ -14,18 +14,24 @@
 #include <string_view>
 #include <vector>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/sprites/particles.hpp>
 #include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
 
 enum class Integrator { explicit_euler, symplectic_euler, midpoint, exact };
-inline constexpr Integrator all_integrators[] = {Integrator::explicit_euler, Integrator::symplectic_euler,
-                                                Integrator::midpoint, Integrator::exact};
-/// "euler", "symplectic", "midpoint", "exact": the --integrator names.
-std::string_view flag_name(Integrator integrator);
-/// "explicit Euler", "symplectic Euler", "midpoint RK2", "exact (closed form)".
-std::string_view display_name(Integrator integrator);
+/// The --integrator names, and the names figures show.
+inline constexpr auto integrator_names = enum_names<Integrator>({
+    {Integrator::explicit_euler, "euler", "explicit Euler"},
+    {Integrator::symplectic_euler, "symplectic", "symplectic Euler"},
+    {Integrator::midpoint, "midpoint", "midpoint RK2"},
+    {Integrator::exact, "exact", "exact (closed form)"},
+});
+static_assert(integrator_names.in_order());
+inline constexpr auto all_integrators = integrator_names.all();
+inline std::string_view flag_name(Integrator integrator) { return integrator_names.flag(integrator); }
+inline std::string_view display_name(Integrator integrator) { return integrator_names.display(integrator); }
 /// Global order of the position error (0 for the exact step: round-off only).
 int order(Integrator integrator);
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <kit/base/enum_names.hpp>
+
 namespace kit {
 
 using Vec3d = std::array<double, 3>;  ///< x, y, z; y is up
@@ -25,10 +27,23 @@ enum class EmitterShape {
   sphere,  ///< uniform in a ball of `radius`, directions radial (outward)
   cone,    ///< at `position`, directions uniform in the cap of half-angle `angle` around `axis`
 };
+/// Their names in scene files (shape = "disc") and messages.
+inline constexpr auto emitter_shape_names = enum_names<EmitterShape>({
+    {EmitterShape::point, "point", "point"},
+    {EmitterShape::disc, "disc", "disc"},
+    {EmitterShape::sphere, "sphere", "sphere"},
+    {EmitterShape::cone, "cone", "cone"},
+});
+static_assert(emitter_shape_names.in_order());
 
 /// How a sprite meets the image: "over" (Porter–Duff, sorted back to front) or additive (glows,
 /// order-free).
 enum class Blend { over, additive };
+inline constexpr auto blend_names = enum_names<Blend>({
+    {Blend::over, "over", "over"},
+    {Blend::additive, "additive", "additive"},
+});
+static_assert(blend_names.in_order());
 
 struct Emitter {
   std::string name;
