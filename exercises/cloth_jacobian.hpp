@@ -14,7 +14,7 @@ namespace kit {
 /// ∂f_a/∂x_a of a spring from a (at xa [m]) to b (at xb [m]), rest length `rest` [m], stiffness
 /// K [N/m]; (1 − L0/l) clamped to ≥ 0 when `clamp`. A spring of zero length has no direction:
 /// its block is zero.
-inline Matrix3 spring_stiffness_block(const Vector3& xa, const Vector3& xb, double rest, double stiffness,
+inline Mat3 spring_stiffness_block(const Vec3& xa, const Vec3& xb, double rest, double stiffness,
                                       bool clamp) {
   // TODO(ex 7.1): x̂ = (xa − xb)/l; P = x̂x̂ᵀ; c = 1 − L0/l (max(0, c) if clamp); −K [P + c (I − P)]
   throw kit::NotImplemented("ex 7.1", "cloth_jacobian.hpp");

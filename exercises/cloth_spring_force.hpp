@@ -12,7 +12,7 @@ namespace kit {
 /// Force [N] on node a of a spring from a (at xa [m], moving at va [m/s]) to b, with rest length
 /// `rest` [m], stiffness family.stiffness [N/m] and damping family.damping [N·s/m]. A spring of
 /// zero length has no direction: its force is zero.
-inline Vector3 spring_force(const Vector3& xa, const Vector3& xb, const Vector3& va, const Vector3& vb, double rest,
+inline Vec3 spring_force(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double rest,
                             const SpringFamily& family) {
   // TODO(ex 6.1): x = xa − xb, l = |x|; F = [K (L0 − l) − μ (va − vb)·x̂] x̂, and zero when l = 0
   throw kit::NotImplemented("ex 6.1", "cloth_spring_force.hpp");

@@ -29,24 +29,24 @@ inline void assemble_implicit_system(const ImplicitSystemInput& in, SparseMatrix
     for (int k = 0; k < 3; ++k) entries.emplace_back(3 * i + k, 3 * i + k, diagonal);
     b.segment<3>(3 * i) = h * in.f.row(i).transpose();
   }
-  const auto put = [&](Eigen::Index row_node, Eigen::Index col_node, const Matrix3& block) {
+  const auto put = [&](Eigen::Index row_node, Eigen::Index col_node, const Mat3& block) {
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) entries.emplace_back(3 * row_node + r, 3 * col_node + c, block(r, c));
   };
   for (std::size_t s = 0; s < in.springs.size(); ++s) {
     const Eigen::Index sa = in.springs.a[s], sb = in.springs.b[s];
-    const Matrix3& J = in.stiffness[s];
-    Matrix3 block = -h * h * J;
-    const Vector3 gap = in.x.row(sa) - in.x.row(sb);
+    const Mat3& J = in.stiffness[s];
+    Mat3 block = -h * h * J;
+    const Vec3 gap = in.x.row(sa) - in.x.row(sb);
     if (gap.norm() > 0) {
-      const Vector3 unit = gap.normalized();
+      const Vec3 unit = gap.normalized();
       block += h * in.springs.damping[s] * unit * unit.transpose();
     }
     put(sa, sa, block);
     put(sb, sb, block);
     put(sa, sb, -block);
     put(sb, sa, -block);
-    const Vector3 pull = h * h * J * (in.v.row(sa) - in.v.row(sb)).transpose();
+    const Vec3 pull = h * h * J * (in.v.row(sa) - in.v.row(sb)).transpose();
     b.segment<3>(3 * sa) += pull;
     b.segment<3>(3 * sb) -= pull;
   }

@@ -14,17 +14,17 @@ namespace kit {
 /// ∂f_a/∂x_a of a spring from a (at xa [m]) to b (at xb [m]), rest length `rest` [m], stiffness
 /// K [N/m]; (1 − L0/l) clamped to ≥ 0 when `clamp`. A spring of zero length has no direction:
 /// its block is zero.
-inline Matrix3 spring_stiffness_block(const Vector3& xa, const Vector3& xb, double rest, double stiffness,
+inline Mat3 spring_stiffness_block(const Vec3& xa, const Vec3& xb, double rest, double stiffness,
                                       bool clamp) {
   // BEGIN SOLUTION ex 7.1: x̂ = (xa − xb)/l; P = x̂x̂ᵀ; c = 1 − L0/l (max(0, c) if clamp); −K [P + c (I − P)]
-  const Vector3 d = xa - xb;
+  const Vec3 d = xa - xb;
   const double length = d.norm();
-  if (length == 0) return Matrix3::Zero();
-  const Vector3 unit = d / length;
-  const Matrix3 along = unit * unit.transpose();
+  if (length == 0) return Mat3::Zero();
+  const Vec3 unit = d / length;
+  const Mat3 along = unit * unit.transpose();
   double turn = 1 - rest / length;
   if (clamp && turn < 0) turn = 0;
-  return -stiffness * (along + turn * (Matrix3::Identity() - along));
+  return -stiffness * (along + turn * (Mat3::Identity() - along));
   // END SOLUTION
 }
 

@@ -19,18 +19,18 @@ inline long collide_sphere(NodeArray& x, NodeArray& v, const SphereCollider& sph
   long inside = 0;
   // BEGIN SOLUTION ex 6.4: for each node with |x − c| < r: n = (x − c)/|x − c| (or +y at c), x = c + r n; if v·n < 0 remove it and shrink v_t by μ|v·n|
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    const Vector3 offset = x.row(i).transpose() - sphere.center;
+    const Vec3 offset = x.row(i).transpose() - sphere.center;
     const double distance = offset.norm();
     if (!(distance < sphere.radius)) continue;
     ++inside;
-    const Vector3 n = distance > 0 ? Vector3(offset / distance) : Vector3(0, 1, 0);
+    const Vec3 n = distance > 0 ? Vec3(offset / distance) : Vec3(0, 1, 0);
     x.row(i) = (sphere.center + sphere.radius * n).transpose();
-    const Vector3 vel = v.row(i).transpose();
+    const Vec3 vel = v.row(i).transpose();
     const double vn = vel.dot(n);
     if (vn >= 0) continue;
-    const Vector3 tangential = vel - vn * n;
+    const Vec3 tangential = vel - vn * n;
     const double speed = tangential.norm(), loss = sphere.friction * -vn;
-    v.row(i) = (speed > loss ? Vector3(tangential * (1 - loss / speed)) : Vector3::Zero()).transpose();
+    v.row(i) = (speed > loss ? Vec3(tangential * (1 - loss / speed)) : Vec3::Zero()).transpose();
   }
   // END SOLUTION
   return inside;

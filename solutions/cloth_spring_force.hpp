@@ -12,13 +12,13 @@ namespace kit {
 /// Force [N] on node a of a spring from a (at xa [m], moving at va [m/s]) to b, with rest length
 /// `rest` [m], stiffness family.stiffness [N/m] and damping family.damping [N·s/m]. A spring of
 /// zero length has no direction: its force is zero.
-inline Vector3 spring_force(const Vector3& xa, const Vector3& xb, const Vector3& va, const Vector3& vb, double rest,
+inline Vec3 spring_force(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double rest,
                             const SpringFamily& family) {
   // BEGIN SOLUTION ex 6.1: x = xa − xb, l = |x|; F = [K (L0 − l) − μ (va − vb)·x̂] x̂, and zero when l = 0
-  const Vector3 x = xa - xb;
+  const Vec3 x = xa - xb;
   const double l = x.norm();
-  if (l == 0) return Vector3::Zero();
-  const Vector3 along = x / l;
+  if (l == 0) return Vec3::Zero();
+  const Vec3 along = x / l;
   return (family.stiffness * (rest - l) - family.damping * (va - vb).dot(along)) * along;
   // END SOLUTION
 }

@@ -12,7 +12,7 @@
 namespace kit {
 
 /// F [dimensionless] of the element whose current nodes are x0, x1, x2 [m], with Dm⁻¹ [1/m].
-inline Matrix32 deformation_gradient(const FemVector3& x0, const FemVector3& x1, const FemVector3& x2,
+inline Matrix32 deformation_gradient(const Vec3& x0, const Vec3& x1, const Vec3& x2,
                                      const Matrix2& rest_inverse) {
   // BEGIN SOLUTION ex 9.1: Ds has the columns x1 − x0 and x2 − x0 (3×2); F = Ds · Dm⁻¹
   Matrix32 Ds;

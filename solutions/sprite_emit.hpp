@@ -6,9 +6,9 @@
 #include <cstdint>
 
 #include <kit/base/not_implemented.hpp>
+#include <kit/base/random.hpp>
 #include <kit/sprites/emitter.hpp>
 #include <kit/sprites/particles.hpp>
-#include <kit/sprites/sprite_random.hpp>
 #include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
@@ -21,7 +21,7 @@ namespace kit {
 /// Velocity = speed·direction, speed drawn from emitter.speed [m/s]; lifetime [s], size [m] and
 /// alpha drawn from theirs; each colour channel from colour ± colour_variance. Colour and alpha
 /// are clamped to [0, 1] and size to ≥ 0 (a draw may leave the range); emitter = index.
-inline ParticleSpawn sample_particle(const Emitter& emitter, std::uint8_t index, SpriteRandom& random) {
+inline ParticleSpawn sample_particle(const Emitter& emitter, std::uint8_t index, Random& random) {
   ParticleSpawn p;
   // BEGIN SOLUTION ex 5.1: place and aim by the shape, then draw speed, lifetime, size, colour and alpha as mean + rand·variance
   Vec3d offset{0, 0, 0}, direction = emitter.axis;

@@ -11,7 +11,7 @@ std::vector<AttributeDraws> measure_emission(const Emitter& emitter, SampleParti
                                   {"size [m]", emitter.size.mean, emitter.size.variance},
                                   {"alpha", emitter.alpha.mean, emitter.alpha.variance}};
   std::vector<double> sum(out.size(), 0.0), squares(out.size(), 0.0);
-  SpriteRandom random(seed);
+  Random random(seed);
   for (int k = 0; k < n; ++k) {
     const ParticleSpawn p = sample(emitter, 0, random);
     const double values[] = {std::hypot(p.vx, p.vy, p.vz), p.lifetime, p.size, p.alpha};

@@ -15,7 +15,7 @@ namespace kit {
 /// The system's kernels, or a NotImplemented naming the first exercise that waits (one particle
 /// drawn, one aged: a probe, so a chapter says what waits before it runs anything long).
 inline SpriteKernels student_kernels(const Emitter& emitter) {
-  SpriteRandom random(0);
+  Random random(0);
   Particles probe;
   probe.reserve(1);
   probe.add(sample_particle(emitter, 0, random));

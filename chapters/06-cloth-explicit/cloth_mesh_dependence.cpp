@@ -30,7 +30,7 @@ ClothScene hanging_sheet(int n, Hanging hanging, double k) {
   const double stiffness = hanging == Hanging::top_edge_k_by_n ? k * n / 8.0 : k;
   scene.springs.structural = SpringFamily{stiffness, 0};
   scene.springs.shear = SpringFamily{stiffness, 0};
-  scene.gravity = Vector3(0, -9.81, 0);
+  scene.gravity = Vec3(0, -9.81, 0);
   for (int i = 0; i < n; ++i) {
     const double along = double(i) / (n - 1);  // position on the top edge, 0 to 1
     const bool pinned = hanging == Hanging::top_edge || hanging == Hanging::top_edge_k_by_n ||

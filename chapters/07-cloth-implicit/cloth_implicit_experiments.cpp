@@ -7,37 +7,37 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
+#include <kit/base/random.hpp>
 #include <kit/base/stopwatch.hpp>
 #include <kit/cloth/cloth_stability.hpp>
-#include <kit/sprites/sprite_random.hpp>
 
 namespace kit {
 namespace {
 
-Vector3 random_direction(SpriteRandom& random) {
+Vec3 random_direction(Random& random) {
   for (;;) {
-    const Vector3 d(random.symmetric(), random.symmetric(), random.symmetric());
+    const Vec3 d(random.symmetric(), random.symmetric(), random.symmetric());
     if (const double n = d.norm(); n > 0.1 && n <= 1) return d / n;
   }
 }
 
 /// The force on a of an undamped spring, f_a = −K (l − L0) x̂ [N]: what the block derives from.
-Vector3 hooke(const Vector3& xa, const Vector3& xb, double rest, double stiffness) {
-  const Vector3 gap = xa - xb;
+Vec3 hooke(const Vec3& xa, const Vec3& xb, double rest, double stiffness) {
+  const Vec3 gap = xa - xb;
   const double l = gap.norm();
   return -stiffness * (l - rest) / l * gap;
 }
 
-double lowest_eigenvalue(const Matrix3& m) {
-  return Eigen::SelfAdjointEigenSolver<Matrix3>(0.5 * (m + m.transpose())).eigenvalues().minCoeff();
+double lowest_eigenvalue(const Mat3& m) {
+  return Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (m + m.transpose())).eigenvalues().minCoeff();
 }
 
 double max_abs(const SparseMatrix& m) {
   return m.nonZeros() ? Eigen::Map<const Eigen::VectorXd>(m.valuePtr(), m.nonZeros()).cwiseAbs().maxCoeff() : 0.0;
 }
 
-std::vector<Matrix3> blocks(const Springs& springs, const NodeArray& x, SpringStiffnessBlock block, bool clamp) {
-  std::vector<Matrix3> out(springs.size());
+std::vector<Mat3> blocks(const Springs& springs, const NodeArray& x, SpringStiffnessBlock block, bool clamp) {
+  std::vector<Mat3> out(springs.size());
   for (std::size_t s = 0; s < springs.size(); ++s)
     out[s] = block(x.row(springs.a[s]), x.row(springs.b[s]), springs.rest[s], springs.stiffness[s], clamp);
   return out;
@@ -61,19 +61,19 @@ std::vector<std::int32_t> pins_of(const ClothScene& scene) {
 }  // namespace
 
 JacobianCheck check_stiffness_block(SpringStiffnessBlock block, int springs) {
-  SpriteRandom random(20261122);
+  Random random(20261122);
   JacobianCheck c;
   c.springs = springs;
   for (int s = 0; s < springs; ++s) {
     const double rest = 0.1 + 1.9 * random.unit(), stiffness = std::pow(10.0, 4 * random.unit());
     const double length = rest * (0.5 + 1.5 * random.unit());
-    const Vector3 xb(random.symmetric(), random.symmetric(), random.symmetric());
-    const Vector3 xa = xb + length * random_direction(random);
-    const Matrix3 j = block(xa, xb, rest, stiffness, false);
-    Matrix3 numeric;
+    const Vec3 xb(random.symmetric(), random.symmetric(), random.symmetric());
+    const Vec3 xa = xb + length * random_direction(random);
+    const Mat3 j = block(xa, xb, rest, stiffness, false);
+    Mat3 numeric;
     const double step = 1e-6 * length;
     for (int k = 0; k < 3; ++k) {
-      const Vector3 e = step * Vector3::Unit(k);
+      const Vec3 e = step * Vec3::Unit(k);
       numeric.col(k) = (hooke(xa + e, xb, rest, stiffness) - hooke(xa - e, xb, rest, stiffness)) / (2 * step);
     }
     c.finite_difference = std::max(c.finite_difference, (j - numeric).norm() / j.norm());
@@ -93,12 +93,12 @@ AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, Im
   const ClothForces forces(springs, masses, scene.gravity, scene.drag);
   const std::vector<std::int32_t> pins = pins_of(scene);
   // A disturbed state: every node off its rest place by up to 2% of a cell, moving up to 0.1 m/s.
-  SpriteRandom random(7);
+  Random random(7);
   NodeArray x = grid.rest_positions(), v(x.rows(), 3), f;
   for (Eigen::Index i = 0; i < x.rows(); ++i)
     for (int k = 0; k < 3; ++k) x(i, k) += 0.02 * grid.dx() * random.symmetric(), v(i, k) = 0.1 * random.symmetric();
   forces(x, v, f);
-  const std::vector<Matrix3> stiffness = blocks(springs, x, kernels.stiffness_block, true);
+  const std::vector<Mat3> stiffness = blocks(springs, x, kernels.stiffness_block, true);
   ImplicitMatrix kit_matrix(springs, x.rows(), pins);
   SparseMatrix a;
   Eigen::VectorXd b, kit_b;
@@ -115,17 +115,17 @@ AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, Im
   c.asymmetry = max_abs(SparseMatrix(a - SparseMatrix(a.transpose()))) / scale;
   c.definite = cholesky_succeeds(a);
   // The sheet squeezed to 70% in its plane, a little rumpled: compressed springs everywhere.
-  const Vector3 centre = x.colwise().mean();
+  const Vec3 centre = x.colwise().mean();
   NodeArray squeezed = x;
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    const Vector3 r = x.row(i).transpose() - centre;
+    const Vec3 r = x.row(i).transpose() - centre;
     squeezed.row(i) = (centre + 0.7 * r + 0.05 * grid.dx() * random_direction(random)).transpose();
   }
   forces(squeezed, v, f);
-  const std::vector<Matrix3> unclamped = blocks(springs, squeezed, kernels.stiffness_block, false);
+  const std::vector<Mat3> unclamped = blocks(springs, squeezed, kernels.stiffness_block, false);
   kit_matrix.assemble(springs, squeezed, unclamped, masses, scene.drag, h);
   c.unclamped_definite = cholesky_succeeds(kit_matrix.matrix);
-  std::vector<Matrix3> filters(std::size_t(x.rows()), Matrix3::Identity());
+  std::vector<Mat3> filters(std::size_t(x.rows()), Mat3::Identity());
   for (const std::int32_t p : pins) filters[std::size_t(p)].setZero();
   c.unclamped_solve = kernels.pcg(kit_matrix.matrix, h * flatten(f), filters, 1e-8, int(3 * x.rows()));
   return c;
@@ -133,7 +133,7 @@ AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, Im
 
 ClothScene test_sheet(const ClothScene& scene, int n, double stiffness) {
   ClothScene sheet = springs_only(at_longest_side(scene, n));
-  sheet.gravity = scene.gravity.value_or(Vector3(0, -9.81, 0));
+  sheet.gravity = scene.gravity.value_or(Vec3(0, -9.81, 0));
   if (sheet.pins.empty()) sheet.pins = {{0, -1}, {-1, -1}};
   double structural = 0;
   for (SpringKind kind : all_spring_kinds)

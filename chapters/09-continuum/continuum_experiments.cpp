@@ -165,8 +165,8 @@ std::vector<TurnedElement> turn_sweep(const FemMaterial& material, const Continu
   const Eigen::Vector2d rest[3] = {{0, 0}, {0.1, 0}, {0, 0.1}};
   const RestTriangle shape = rest_triangle(rest[0], rest[1], rest[2], material.thickness);
   const auto gradient = [&](const Eigen::Matrix3d& motion) {
-    FemVector3 x[3];
-    for (int i = 0; i < 3; ++i) x[i] = motion * FemVector3(rest[i].x(), rest[i].y(), 0);
+    Vec3 x[3];
+    for (int i = 0; i < 3; ++i) x[i] = motion * Vec3(rest[i].x(), rest[i].y(), 0);
     return kernels.element.deformation_gradient(x[0], x[1], x[2], shape.inverse);
   };
   const Eigen::Matrix3d stretch = Eigen::Vector3d(1.01, 1, 1).asDiagonal();
@@ -174,7 +174,7 @@ std::vector<TurnedElement> turn_sweep(const FemMaterial& material, const Continu
   std::vector<TurnedElement> sweep;
   for (int k = 0; k < samples; ++k) {
     const double degrees = 180.0 * k / (samples - 1);
-    const Matrix32 F = gradient(Eigen::AngleAxisd(degrees * M_PI / 180, FemVector3::UnitZ()).toRotationMatrix());
+    const Matrix32 F = gradient(Eigen::AngleAxisd(degrees * M_PI / 180, Vec3::UnitZ()).toRotationMatrix());
     sweep.push_back({degrees, cauchy_strain(F).norm(), kernels.element.green_strain(F).norm(),
                      linear_forces(F, shape.inverse, shape.volume, lame).cwiseAbs().maxCoeff() / scale,
                      kernels.element.forces(F, shape.inverse, shape.volume, lame).cwiseAbs().maxCoeff() / scale});

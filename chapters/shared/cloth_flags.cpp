@@ -21,7 +21,7 @@ ClothIntegrator integrator_named(const std::string& name) {
       fmt::format("--integrator: '{}' is not one of {}", name, fmt::join(cloth_integrator_names.flags(), ", ")));
 }
 
-nlohmann::json vector_json(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
+nlohmann::json vector_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 }  // namespace
 

@@ -43,7 +43,7 @@ constexpr double damping = 1e-3;
 constexpr double density = 0.1;           // [kg/m²]
 constexpr double t_end = 2;               // [s] simulated in part 3
 constexpr double bullet_h = 1.0 / 240;    // [s], a game's step
-const kit::Vector3 gravity{0, -9.81, 0};  // [m/s²]
+const kit::Vec3 gravity{0, -9.81, 0};  // [m/s²]
 
 // The sheet: horizontal (x, z) at height 1 m, held by the two corners of its j = 0 edge, so it
 // swings down under gravity: the springs work, unlike a sheet that merely hangs at rest.
@@ -60,7 +60,7 @@ Sheet make_sheet(int n) {
   Sheet sheet;
   sheet.grid.nx = sheet.grid.ny = n;
   sheet.grid.width = sheet.grid.height = 1;
-  sheet.grid.origin = kit::Vector3(-0.5, 1, -0.5);
+  sheet.grid.origin = kit::Vec3(-0.5, 1, -0.5);
   sheet.grid.areal_density = density;
   kit::SpringLayout layout;
   layout.structural = layout.shear = layout.bend = kit::SpringFamily{stiffness, damping};

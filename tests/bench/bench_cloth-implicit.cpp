@@ -87,7 +87,7 @@ constexpr double tolerance = 1e-3;    // relative residual of each CG solve
 constexpr int warm_steps = 15;        // steps of h before part 1's state: mid-swing, a typical solve
 constexpr double target_ms = 25;      // per implicit step, one core
 constexpr double target_ratio = 10;   // implicit at least this much cheaper per simulated second
-const kit::Vector3 gravity{0, -9.81, 0};  // [m/s²]
+const kit::Vec3 gravity{0, -9.81, 0};  // [m/s²]
 
 const kit::ImplicitKernels implicit_kernels{&kit::spring_stiffness_block, &kit::assemble_implicit_system,
                                             &kit::filtered_pcg};
@@ -100,7 +100,7 @@ kit::ClothScene make_scene() {
   scene.name = "liu-sheet";
   scene.grid.nx = scene.grid.ny = n;
   scene.grid.width = scene.grid.height = 1;
-  scene.grid.origin = kit::Vector3(-0.5, 1, -0.5);
+  scene.grid.origin = kit::Vec3(-0.5, 1, -0.5);
   scene.grid.areal_density = density;
   scene.springs.structural = scene.springs.shear = scene.springs.bend = kit::SpringFamily{stiffness, damping};
   scene.springs.bend_layout = kit::BendLayout::four;
@@ -163,7 +163,7 @@ StepSplit split_step(kit::ClothSystem& cloth, const State& state, kit::ImplicitS
   const kit::Springs& springs = cloth.springs();
   const kit::NodeArray &x = state.x, &v = state.v;
   StepSplit out;
-  std::vector<kit::Matrix3> stiffness(springs.size());
+  std::vector<kit::Mat3> stiffness(springs.size());
   const auto jacobian = [&] {
     for (std::size_t s = 0; s < springs.size(); ++s)
       stiffness[s] = implicit_kernels.stiffness_block(x.row(springs.a[s]), x.row(springs.b[s]), springs.rest[s],
@@ -181,7 +181,7 @@ StepSplit split_step(kit::ClothSystem& cloth, const State& state, kit::ImplicitS
   jacobian(), forces_rhs(), assemble();  // each piece's inputs, before any is timed
 
   std::function<void()> solve;
-  std::vector<kit::Matrix3> filters(std::size_t(x.rows()), kit::Matrix3::Identity());
+  std::vector<kit::Mat3> filters(std::size_t(x.rows()), kit::Mat3::Identity());
   for (const std::int32_t p : cloth.pins()) filters[std::size_t(p)].setZero();
   kit::PcgResult result;
   kit::ImplicitMatrix constrained = matrix;  // pins by elimination, as the stepper does for CG
@@ -393,7 +393,7 @@ int main() {
   {
     restore(cloth, state);
     const kit::NodeArray &x = state.x, &v = state.v;
-    std::vector<kit::Matrix3> stiffness(springs.size());
+    std::vector<kit::Mat3> stiffness(springs.size());
     for (std::size_t s = 0; s < springs.size(); ++s)
       stiffness[s] = kit::spring_stiffness_block(x.row(springs.a[s]), x.row(springs.b[s]), springs.rest[s],
                                                  springs.stiffness[s], true);

@@ -98,7 +98,7 @@ kit::FemBody deformed_sheet(int n, kit::FemModel model) {
   return body;
 }
 
-kit::FemVector3 node(const kit::NodeArray& x, int i) { return x.row(i).transpose(); }
+kit::Vec3 node(const kit::NodeArray& x, int i) { return x.row(i).transpose(); }
 
 // The rest shapes again (FemBody keeps its own private): what the loops written here read, in
 // the same layout as FemBody's (one RestTriangle, 40 B, per element).
@@ -230,7 +230,7 @@ std::string ns(double seconds_per_item) { return kit::fixed(1e9 * seconds_per_it
 
 // --- 3. the implicit step --------------------------------------------------------------------
 // Applies each node's 3×3 filter to its three entries of w (what implicit_step does to b).
-void filter_in_place(const std::vector<kit::Matrix3>& filters, Eigen::VectorXd& w) {
+void filter_in_place(const std::vector<kit::Mat3>& filters, Eigen::VectorXd& w) {
   for (std::size_t node = 0; node < filters.size(); ++node) {
     auto entries = w.segment<3>(3 * Eigen::Index(node));
     entries = filters[node] * entries;

@@ -38,7 +38,7 @@ kit::SpriteScene bench_scene() {
 kit::Particles filled(const kit::SpriteScene& scene, std::size_t n) {
   kit::Particles ps;
   ps.reserve(n);
-  kit::SpriteRandom random(1);
+  kit::Random random(1);
   for (std::size_t i = 0; i < n; ++i) ps.add(kit::sample_particle(scene.emitters[0], 0, random));
   return ps;
 }

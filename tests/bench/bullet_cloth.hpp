@@ -24,7 +24,7 @@ class BulletCloth {
   /// An n×n sheet of 1 m, horizontal at height 1 m, node (i, j) = j·n + i at
   /// (−0.5 + i/(n−1), 1, −0.5 + j/(n−1)) as on the kit's grid; `mass` [kg] in all, `gravity`
   /// [m/s²]; `iterations` position iterations a step (0: Bullet's default).
-  BulletCloth(int n, double mass, const kit::Vector3& gravity, int iterations) : n_(n) {
+  BulletCloth(int n, double mass, const kit::Vec3& gravity, int iterations) : n_(n) {
     const btVector3 g(btScalar(gravity.x()), btScalar(gravity.y()), btScalar(gravity.z()));
     world_.setGravity(g);
     btSoftBodyWorldInfo& info = world_.getWorldInfo();

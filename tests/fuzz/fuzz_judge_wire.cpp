@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         decode<Eigen::MatrixXd>(r);
         break;
       case 3:
-        decode<kit::Matrix3>(r);
+        decode<kit::Mat3>(r);
         break;
       case 4:
         decode<kit::SparseMatrix>(r);
@@ -64,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       default: {
         kit::remote::RandomBytes bytes{};
         kit::remote::get(r, bytes);
-        kit::SpriteRandom random(1);
+        kit::Random random(1);
         kit::remote::restore(random, bytes);
         random.unit();
       }

@@ -48,7 +48,7 @@ constexpr double chi2_limit = 45.0;
 TEST_CASE("ex 5.1: speed, lifetime, size, colour and alpha are each uniform in mean ± variance",
           "[grade][05-sprites][ex5.1]") {
   const kit::Emitter e = cone_emitter();
-  kit::SpriteRandom random(kit::testing::seed());
+  kit::Random random(kit::testing::seed());
   std::vector<double> speed, lifetime, size, r, g, b, alpha;
   for (const kit::ParticleSpawn& p : kit::remote::sample_particles(e, 3, random, 50000)) {
     speed.push_back(length(p.vx, p.vy, p.vz));
@@ -82,7 +82,7 @@ TEST_CASE("ex 5.1: with no variance every attribute is its mean, and the emitter
   kit::Emitter e = cone_emitter();
   e.angle_deg = 0, e.speed.variance = 0, e.lifetime.variance = 0, e.size.variance = 0, e.alpha.variance = 0;
   e.colour_variance = {0, 0, 0};
-  kit::SpriteRandom random(kit::testing::seed());
+  kit::Random random(kit::testing::seed());
   const kit::ParticleSpawn p = kit::sample_particle(e, 7, random);
   CHECK(p.emitter == 7);
   CHECK(p.x == 1.f);
@@ -99,7 +99,7 @@ TEST_CASE("ex 5.1: with no variance every attribute is its mean, and the emitter
 TEST_CASE("ex 5.1: colour and alpha are clamped to [0, 1] and size to >= 0", "[grade][05-sprites][ex5.1]") {
   kit::Emitter e = cone_emitter();
   e.colour = {0.9, 0.1, 0.5}, e.colour_variance = {0.5, 0.5, 0.5}, e.alpha = {0.9, 0.5}, e.size = {0.05, 0.2};
-  kit::SpriteRandom random(kit::testing::seed());
+  kit::Random random(kit::testing::seed());
   bool clamped_high = false, clamped_low = false;
   for (const kit::ParticleSpawn& p : kit::remote::sample_particles(e, 0, random, 5000)) {
     for (float c : {p.r, p.g, p.b, p.alpha}) {
@@ -114,7 +114,7 @@ TEST_CASE("ex 5.1: colour and alpha are clamped to [0, 1] and size to >= 0", "[g
 }
 
 TEST_CASE("ex 5.1: each shape places and aims as specified", "[grade][05-sprites][ex5.1]") {
-  kit::SpriteRandom random(kit::testing::seed());
+  kit::Random random(kit::testing::seed());
   kit::Emitter e = cone_emitter();
   e.speed = {2, 0};
   const int n = 20000;

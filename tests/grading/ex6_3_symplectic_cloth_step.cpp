@@ -12,7 +12,7 @@ namespace {
 // by a constant wind, F_i = −k_i x_i + w [N]. It counts its calls.
 struct TestForces {
   Eigen::VectorXd k;
-  kit::Vector3 wind{0.5, -2, 1};
+  kit::Vec3 wind{0.5, -2, 1};
   mutable int calls = 0;
   void operator()(const kit::NodeArray& x, const kit::NodeArray&, kit::NodeArray& f) const {
     ++calls;
@@ -42,9 +42,9 @@ TEST_CASE("ex 6.3: v += Δt F/m node by node, then x += Δt v with the NEW v; on
     kit::symplectic_cloth_step(x, v, masses, {}, forces, f, dt);
     CHECK(forces.calls == 1);
     for (long i = 0; i < n; ++i) {
-      const kit::Vector3 force = -forces.k[i] * x0.row(i).transpose() + forces.wind;
-      const kit::Vector3 v_new = v0.row(i).transpose() + dt * force / masses[i];
-      const kit::Vector3 x_new = x0.row(i).transpose() + dt * v_new;
+      const kit::Vec3 force = -forces.k[i] * x0.row(i).transpose() + forces.wind;
+      const kit::Vec3 v_new = v0.row(i).transpose() + dt * force / masses[i];
+      const kit::Vec3 x_new = x0.row(i).transpose() + dt * v_new;
       CHECK((v.row(i).transpose() - v_new).norm() <= 1e-12 * (1 + v_new.norm()));
       CHECK((x.row(i).transpose() - x_new).norm() <= 1e-12 * (1 + x_new.norm()));
     }

@@ -8,8 +8,8 @@
 #include "cloth_sphere.hpp"
 
 namespace {
-using kit::Vector3;
-kit::NodeArray row(const Vector3& p) {
+using kit::Vec3;
+kit::NodeArray row(const Vec3& p) {
   kit::NodeArray a(1, 3);
   a.row(0) = p.transpose();
   return a;
@@ -29,7 +29,7 @@ TEST_CASE("ex 6.4: a node inside goes to the surface along its radius; nodes out
   for (int i = 0; i < 400; ++i) inside += (x0.row(i).transpose() - sphere.center).norm() < sphere.radius;
   CHECK(kit::collide_sphere(x, v, sphere) == inside);
   for (int i = 0; i < 400; ++i) {
-    const Vector3 before = x0.row(i).transpose() - sphere.center, after = x.row(i).transpose() - sphere.center;
+    const Vec3 before = x0.row(i).transpose() - sphere.center, after = x.row(i).transpose() - sphere.center;
     if (before.norm() < sphere.radius) {
       CHECK(after.norm() == Approx(sphere.radius).epsilon(1e-12));
       CHECK((after.normalized() - before.normalized()).norm() < 1e-12);  // along its own radius
@@ -42,9 +42,9 @@ TEST_CASE("ex 6.4: a node inside goes to the surface along its radius; nodes out
 
 TEST_CASE("ex 6.4: an inward velocity loses its normal part, and friction takes μ|v_n| off the tangential part",
           "[grade][06-cloth-explicit][ex6.4]") {
-  const Vector3 centre(0, 0, 0);
-  const Vector3 inside(0, 0.9, 0);  // under the top of a unit sphere: the normal is +y
-  const Vector3 velocity(3, -2, 0);  // v_n = −2, v_t = (3, 0, 0)
+  const Vec3 centre(0, 0, 0);
+  const Vec3 inside(0, 0.9, 0);  // under the top of a unit sphere: the normal is +y
+  const Vec3 velocity(3, -2, 0);  // v_n = −2, v_t = (3, 0, 0)
   for (double mu : {0.0, 0.5, 1.0, 1.5, 10.0}) {
     kit::NodeArray x = row(inside), v = row(velocity);
     kit::collide_sphere(x, v, {centre, 1.0, mu});
@@ -76,14 +76,14 @@ TEST_CASE("ex 6.4: the response holds for any normal, not only +y", "[grade][06-
   const kit::SphereCollider sphere{{0.2, -0.4, 0.7}, 1.3, 0.6};
   for (int trial = 0; trial < 200; ++trial) {
     // A direction away from +y and an inward velocity with a tangential part.
-    Vector3 n(kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 0.3), kit::test::uniform(rng, -1, 1));
+    Vec3 n(kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 0.3), kit::test::uniform(rng, -1, 1));
     n.normalize();
-    Vector3 t = n.cross(Vector3(0, 1, 0)).normalized();
+    Vec3 t = n.cross(Vec3(0, 1, 0)).normalized();
     const double vn = -kit::test::uniform(rng, 0.1, 3), vt = kit::test::uniform(rng, 0, 3);
-    const Vector3 velocity = vn * n + vt * t;
+    const Vec3 velocity = vn * n + vt * t;
     kit::NodeArray x = row(sphere.center + kit::test::uniform(rng, 0.1, 0.99) * sphere.radius * n), v = row(velocity);
     kit::collide_sphere(x, v, sphere);
-    const Vector3 expected = std::max(0.0, vt - sphere.friction * -vn) * t;
+    const Vec3 expected = std::max(0.0, vt - sphere.friction * -vn) * t;
     INFO("trial " << trial << ": n = " << n.transpose() << ", v_n = " << vn << ", v_t = " << vt);
     CHECK((x.row(0).transpose() - (sphere.center + sphere.radius * n)).norm() < 1e-12);
     CHECK((v.row(0).transpose() - expected).norm() < 1e-12);

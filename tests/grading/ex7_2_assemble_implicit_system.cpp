@@ -14,8 +14,8 @@
 #include "cloth_assembly.hpp"
 
 namespace {
-using kit::Matrix3;
-using kit::Vector3;
+using kit::Mat3;
+using kit::Vec3;
 
 /// A small random cloth: n nodes, springs between random distinct nodes (a pair may repeat),
 /// random state, forces, masses, and per-spring damping (zero for some springs).
@@ -23,7 +23,7 @@ struct RandomCloth {
   kit::Springs springs;
   kit::NodeArray x, v, f;
   Eigen::VectorXd masses;
-  std::vector<Matrix3> blocks;  // ∂f_a/∂x_a of each spring
+  std::vector<Mat3> blocks;  // ∂f_a/∂x_a of each spring
   std::optional<double> drag;
   double h = 0;
 };
@@ -38,18 +38,18 @@ kit::NodeArray random_nodes(std::mt19937_64& rng, long n, double scale) {
 long random_index(std::mt19937_64& rng, long n) { return std::uniform_int_distribution<long>(0, n - 1)(rng); }
 
 /// The physical stiffness block of a spring, written as −K [(L0/l) x̂x̂ᵀ + (1 − L0/l) I], entry by entry.
-Matrix3 physical_block(const Vector3& xa, const Vector3& xb, double rest, double k) {
-  const Vector3 d = xb - xa;
+Mat3 physical_block(const Vec3& xa, const Vec3& xb, double rest, double k) {
+  const Vec3 d = xb - xa;
   const double squared = d.dot(d), l = std::sqrt(squared);
-  Matrix3 j;
+  Mat3 j;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) j(r, c) = -k * ((rest / l) * d[r] * d[c] / squared + (r == c ? 1 - rest / l : 0.0));
   return j;
 }
 
 /// A random symmetric 3×3 matrix, entries up to `scale`: a block the assembly must use as given.
-Matrix3 random_symmetric(std::mt19937_64& rng, double scale) {
-  Matrix3 m;
+Mat3 random_symmetric(std::mt19937_64& rng, double scale) {
+  Mat3 m;
   for (int r = 0; r < 3; ++r)
     for (int c = r; c < 3; ++c) m(r, c) = m(c, r) = kit::test::uniform(rng, -scale, scale);
   return m;
@@ -97,9 +97,9 @@ DenseSystem dense_reference(const RandomCloth& cloth) {
     }
   for (std::size_t s = 0; s < cloth.springs.size(); ++s) {
     const Eigen::Index a = cloth.springs.a[s], b = cloth.springs.b[s];
-    const Vector3 d = cloth.x.row(b) - cloth.x.row(a);
+    const Vec3 d = cloth.x.row(b) - cloth.x.row(a);
     const double squared = d.squaredNorm();
-    Matrix3 damping = Matrix3::Zero();  // −μ x̂x̂ᵀ; none for coincident ends
+    Mat3 damping = Mat3::Zero();  // −μ x̂x̂ᵀ; none for coincident ends
     if (squared > 0) damping = -(cloth.springs.damping[s] / squared) * (d * d.transpose());
     // Signs of the four blocks: + on (a, a) and (b, b), − on (a, b) and (b, a).
     const std::array<std::tuple<Eigen::Index, Eigen::Index, double>, 4> placed{
@@ -164,11 +164,11 @@ TEST_CASE("ex 7.2: A is symmetric, and a common velocity change meets only the m
     CHECK(largest(got.A - got.A.transpose()) <= 1e-12 * largest(got.A));
     // A (t, t, …, t): every spring block meets its negative in the same row, so node i gets
     // m_i (1 + h c) t.
-    const Vector3 t(kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1));
+    const Vec3 t(kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1));
     const Eigen::VectorXd product = got.A * t.replicate(n, 1);
     double worst = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
-      const Vector3 expected = cloth.masses[i] * (1 + cloth.h * cloth.drag.value_or(0)) * t;
+      const Vec3 expected = cloth.masses[i] * (1 + cloth.h * cloth.drag.value_or(0)) * t;
       worst = std::max(worst, (product.segment<3>(3 * i) - expected).norm());
     }
     CHECK(worst <= 1e-12 * largest(got.A));
@@ -232,9 +232,9 @@ TEST_CASE("ex 7.2: one damped spring along x at its rest length, by hand", "[gra
   f << 0.5, -1, 2, 0, 0, 1;
   Eigen::VectorXd masses(2);
   masses << 2, 0.5;
-  Matrix3 block = Matrix3::Zero();
+  Mat3 block = Mat3::Zero();
   block(0, 0) = -400;
-  const std::vector<Matrix3> blocks{block};
+  const std::vector<Mat3> blocks{block};
   const kit::ImplicitSystemInput in{springs, x, v, f, masses, blocks, std::nullopt, 0.1};
   kit::SparseMatrix A;
   Eigen::VectorXd b;

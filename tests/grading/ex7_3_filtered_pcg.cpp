@@ -11,15 +11,15 @@
 #include "cloth_pcg.hpp"
 
 namespace {
-using kit::Matrix3;
-using kit::Vector3;
+using kit::Mat3;
+using kit::Vec3;
 
 long random_index(std::mt19937_64& rng, long n) { return std::uniform_int_distribution<long>(0, n - 1)(rng); }
 
-Vector3 random_unit(std::mt19937_64& rng) {
-  Vector3 u;
+Vec3 random_unit(std::mt19937_64& rng) {
+  Vec3 u;
   do {
-    u = Vector3(kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1));
+    u = Vec3(kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1));
   } while (u.norm() < 0.1 || u.norm() > 1);
   return u / u.norm();
 }
@@ -28,8 +28,8 @@ Vector3 random_unit(std::mt19937_64& rng) {
 enum class Kind { free, pinned, plane };
 struct Constraints {
   std::vector<Kind> kind;
-  std::vector<Vector3> normal;  // of the plane nodes
-  std::vector<Matrix3> filters;
+  std::vector<Vec3> normal;  // of the plane nodes
+  std::vector<Mat3> filters;
   long dofs = 0;                // the dimension of the directions the nodes may move in
 };
 
@@ -37,11 +37,11 @@ Constraints make_constraints(const std::vector<Kind>& kind, std::mt19937_64& rng
   Constraints c;
   c.kind = kind;
   for (Kind k : kind) {
-    const Vector3 n = random_unit(rng);
+    const Vec3 n = random_unit(rng);
     c.normal.push_back(n);
-    if (k == Kind::free) c.filters.push_back(Matrix3::Identity()), c.dofs += 3;
-    if (k == Kind::pinned) c.filters.push_back(Matrix3::Zero());
-    if (k == Kind::plane) c.filters.push_back(Matrix3::Identity() - n * n.transpose()), c.dofs += 2;
+    if (k == Kind::free) c.filters.push_back(Mat3::Identity()), c.dofs += 3;
+    if (k == Kind::pinned) c.filters.push_back(Mat3::Zero());
+    if (k == Kind::plane) c.filters.push_back(Mat3::Identity() - n * n.transpose()), c.dofs += 2;
   }
   return c;
 }
@@ -66,9 +66,9 @@ Eigen::MatrixXd allowed_basis(const Constraints& c) {
     if (c.kind[std::size_t(i)] == Kind::free)
       for (int axis = 0; axis < 3; ++axis) z(3 * i + axis, column++) = 1;
     if (c.kind[std::size_t(i)] == Kind::plane) {
-      const Vector3& n = c.normal[std::size_t(i)];
-      const Vector3 seed = std::abs(n[0]) < 0.6 ? Vector3::UnitX() : Vector3::UnitY();
-      const Vector3 u = n.cross(seed).normalized(), w = n.cross(u);
+      const Vec3& n = c.normal[std::size_t(i)];
+      const Vec3 seed = std::abs(n[0]) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
+      const Vec3 u = n.cross(seed).normalized(), w = n.cross(u);
       z.block<3, 1>(3 * i, column++) = u;
       z.block<3, 1>(3 * i, column++) = w;
     }
@@ -116,7 +116,7 @@ kit::SparseMatrix sparse(const Eigen::MatrixXd& dense) { return dense.sparseView
 /// usual signs (+ on the diagonal blocks, − off them).
 Eigen::MatrixXd cloth_matrix(std::mt19937_64& rng, int nx, int ny) {
   const long nodes = long(nx) * ny;
-  std::vector<Vector3> p;
+  std::vector<Vec3> p;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i)
       p.emplace_back(0.1 * i + kit::test::uniform(rng, -0.01, 0.01), kit::test::uniform(rng, -0.01, 0.01),
@@ -124,11 +124,11 @@ Eigen::MatrixXd cloth_matrix(std::mt19937_64& rng, int nx, int ny) {
   const double m = 0.005, k = 800, mu = 0.05, h = 0.01;
   Eigen::MatrixXd a = m * Eigen::MatrixXd::Identity(3 * nodes, 3 * nodes);
   const auto join = [&](long s, long t, double rest) {
-    const Vector3 d = p[std::size_t(s)] - p[std::size_t(t)];
+    const Vec3 d = p[std::size_t(s)] - p[std::size_t(t)];
     const double length = d.norm();
-    const Matrix3 axial = d * d.transpose() / (length * length);
+    const Mat3 axial = d * d.transpose() / (length * length);
     const double turn = std::max(0.0, 1 - rest / length);
-    const Matrix3 block = (h * mu + h * h * k) * axial + h * h * k * turn * (Matrix3::Identity() - axial);
+    const Mat3 block = (h * mu + h * h * k) * axial + h * h * k * turn * (Mat3::Identity() - axial);
     a.block<3, 3>(3 * s, 3 * s) += block;
     a.block<3, 3>(3 * t, 3 * t) += block;
     a.block<3, 3>(3 * s, 3 * t) -= block;
@@ -163,7 +163,7 @@ void check_constrained_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
   // Constraints hold exactly: pinned nodes do not move at all, plane nodes not along n.
   double pinned = 0, normal = 0;
   for (std::size_t i = 0; i < c.kind.size(); ++i) {
-    const Vector3 xi = got.x.segment<3>(3 * Eigen::Index(i));
+    const Vec3 xi = got.x.segment<3>(3 * Eigen::Index(i));
     if (c.kind[i] == Kind::pinned) pinned = std::max(pinned, xi.cwiseAbs().maxCoeff());
     if (c.kind[i] == Kind::plane) normal = std::max(normal, std::abs(c.normal[i].dot(xi)));
   }
@@ -227,7 +227,7 @@ TEST_CASE("ex 7.3: identity filters give plain Jacobi-preconditioned CG: Eigen's
     const Eigen::MatrixXd a = random_spd(rng, nodes, 1);
     const Eigen::VectorXd b = random_vector(rng, 3 * nodes);
     const kit::SparseMatrix matrix = sparse(a);
-    const std::vector<Matrix3> identity(std::size_t(nodes), Matrix3::Identity());
+    const std::vector<Mat3> identity(std::size_t(nodes), Mat3::Identity());
     const double tol = 1e-10;
     const kit::PcgResult got = kit::filtered_pcg(matrix, b, identity, tol, 1000);
     // Eigen's CG, preconditioned by the diagonal too, with the same stopping rule ‖r‖ ≤ tol ‖b‖.
@@ -260,7 +260,7 @@ TEST_CASE("ex 7.3: preconditioned by diag(A): a system scaled over 8 decades tak
         Eigen::VectorXd::NullaryExpr(3 * nodes, [&] { return std::pow(10.0, kit::test::uniform(rng, -2, 2)); });
     const Eigen::MatrixXd scaled = e.asDiagonal() * a * e.asDiagonal();
     const Eigen::VectorXd b = random_vector(rng, 3 * nodes);
-    const std::vector<Matrix3> identity(std::size_t(nodes), Matrix3::Identity());
+    const std::vector<Mat3> identity(std::size_t(nodes), Mat3::Identity());
     const kit::PcgResult plain = kit::filtered_pcg(sparse(a), b, identity, 1e-8, 1000);
     const kit::PcgResult hard = kit::filtered_pcg(sparse(scaled), e.asDiagonal() * b, identity, 1e-8, 1000);
     INFO("trial " << trial << ": iterations " << plain.iterations << " unscaled, " << hard.iterations << " scaled");
@@ -319,8 +319,8 @@ TEST_CASE("ex 7.3: nothing to solve (b = 0, or b only on pinned nodes): x = 0, r
     kind[1] = Kind::plane;
     const Constraints c = make_constraints(kind, rng);
     Eigen::VectorXd only_pins = Eigen::VectorXd::Zero(3 * nodes);
-    only_pins.head<3>() = Vector3(1, -2, 3);
-    only_pins.segment<3>(6) = Vector3(-4, 0.5, 2);
+    only_pins.head<3>() = Vec3(1, -2, 3);
+    only_pins.segment<3>(6) = Vec3(-4, 0.5, 2);
     for (const Eigen::VectorXd& b : {Eigen::VectorXd(Eigen::VectorXd::Zero(3 * nodes)), only_pins}) {
       const kit::PcgResult got = kit::filtered_pcg(sparse(a), b, c.filters, 1e-10, 100);
       INFO("trial " << trial << ", |b| = " << b.norm());
@@ -337,7 +337,7 @@ TEST_CASE("ex 7.3: nothing to solve (b = 0, or b only on pinned nodes): x = 0, r
 TEST_CASE("ex 7.3: where cᵀAc ≤ 0 (A indefinite or singular) it stops, says so, and returns no NaN",
           "[grade][07-cloth-implicit][ex7.3]") {
   const long nodes = 4;
-  const std::vector<Matrix3> identity(std::size_t(nodes), Matrix3::Identity());
+  const std::vector<Mat3> identity(std::size_t(nodes), Mat3::Identity());
   // x of node 0 and x of node 1 coupled by [[1, g], [g, 1]], the rest the identity; b = e_0 − e_3,
   // the first direction is b itself. g = 3: curvature 2 − 2g < 0 (indefinite); g = 1: exactly 0.
   for (double g : {3.0, 1.0}) {
@@ -365,7 +365,7 @@ TEST_CASE("ex 7.3: where cᵀAc ≤ 0 (A indefinite or singular) it stops, says 
       const long p = random_index(rng, size), q = random_index(rng, size);
       if (p != q) a(p, q) = a(q, p) = kit::test::uniform(rng, -4, 4);
     }
-    const std::vector<Matrix3> unfiltered(std::size_t(size / 3), Matrix3::Identity());
+    const std::vector<Mat3> unfiltered(std::size_t(size / 3), Mat3::Identity());
     const Eigen::VectorXd b = random_vector(rng, size);
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> spectrum(a, Eigen::EigenvaluesOnly);
     INFO("trial " << trial << ": smallest eigenvalue " << spectrum.eigenvalues()[0]);

@@ -25,10 +25,10 @@ TEST_CASE("ex 9.1: F maps the rest edges onto the current ones, and is the F the
     // Each rest edge, X1 − X0 and X2 − X0 (the columns of Dm), lands on its current edge; an
     // F built from X2 − X1 or from Dm instead of Dm⁻¹ misses them.
     for (int i = 1; i <= 2; ++i) {
-      const kit::FemVector3 edge = e.nodes[i] - e.nodes[0];
+      const kit::Vec3 edge = e.nodes[i] - e.nodes[0];
       CHECK((F * (e.rest_nodes[i] - e.rest_nodes[0]) - edge).norm() <= 1e-12 * edge.norm());
     }
-    const kit::FemVector3 far_edge = e.nodes[2] - e.nodes[1];
+    const kit::Vec3 far_edge = e.nodes[2] - e.nodes[1];
     CHECK((F * (e.rest_nodes[2] - e.rest_nodes[1]) - far_edge).norm() <= 1e-12 * far_edge.norm());
   }
 }

@@ -10,7 +10,7 @@
 
 namespace {
 using kit::ElementForces;
-using kit::FemVector3;
+using kit::Vec3;
 using kit::Matrix2;
 using kit::Matrix32;
 using kit::test::describe;
@@ -62,8 +62,8 @@ TEST_CASE("ex 9.2: no net force and no net moment; none at rest or under a rigid
     CHECK(scale > 0);
     CHECK(f.rowwise().sum().norm() <= 1e-13 * scale);
     // Σ x_i × f_i = 0: the energy does not change when the element turns, so its forces cannot turn it.
-    FemVector3 moment = FemVector3::Zero();
-    for (int i = 0; i < 3; ++i) moment += (e.nodes[i] - e.nodes[0]).cross(FemVector3(f.col(i)));
+    Vec3 moment = Vec3::Zero();
+    for (int i = 0; i < 3; ++i) moment += (e.nodes[i] - e.nodes[0]).cross(Vec3(f.col(i)));
     const double arm = (e.nodes[1] - e.nodes[0]).norm() + (e.nodes[2] - e.nodes[0]).norm();
     CHECK(moment.norm() <= 1e-13 * scale * arm);
     // A rigid motion of the same element: no force at all.

@@ -8,7 +8,7 @@
 #include "fem_stvk_stiffness.hpp"
 
 namespace {
-using kit::FemVector3;
+using kit::Vec3;
 using kit::Matrix9;
 using kit::Vector9;
 using kit::test::describe;
@@ -70,7 +70,7 @@ TEST_CASE("ex 9.3: symmetric, blind to translations, and at rest blind to small 
     const auto e = random_element(rng, 0.0);
     const Matrix9 K = kit::stvk_stiffness(e.F, e.rest.inverse, e.rest.volume, e.lame);
     const double wx = kit::test::uniform(rng, -1, 1), wy = kit::test::uniform(rng, -1, 1);
-    const FemVector3 omega(wx, wy, kit::test::uniform(rng, -1, 1));
+    const Vec3 omega(wx, wy, kit::test::uniform(rng, -1, 1));
     Vector9 turn;
     for (int node = 0; node < 3; ++node) turn.segment<3>(3 * node) = omega.cross(e.nodes[node] - e.nodes[0]);
     const double size = K.cwiseAbs().maxCoeff() * turn.cwiseAbs().maxCoeff();

@@ -21,7 +21,7 @@ namespace kit::test {
 struct RandomElement {
   std::array<Eigen::Vector2d, 3> rest_nodes;  ///< X0, X1, X2 [m], counter-clockwise
   RestTriangle rest;
-  std::array<FemVector3, 3> nodes;  ///< x0, x1, x2 [m]
+  std::array<Vec3, 3> nodes;  ///< x0, x1, x2 [m]
   Matrix32 F;                       ///< the deformation gradient they were made with
   Lame lame;                        ///< [Pa]
 };
@@ -55,7 +55,7 @@ inline RandomElement random_element(std::mt19937_64& rng, double strain_size = 0
   strain(0, 1) = strain(1, 0) = uniform(rng, -strain_size, strain_size) / 2;
   const Eigen::Matrix3d R = random_space_rotation(rng);
   e.F = R.leftCols<2>() * (Matrix2::Identity() + strain);
-  const FemVector3 shift(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+  const Vec3 shift(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
   for (int i = 0; i < 3; ++i) e.nodes[i] = e.F * e.rest_nodes[i] + shift;
   const double young = std::pow(10.0, uniform(rng, 4, 8));
   const double poisson = uniform(rng, 0, 0.45);
@@ -72,7 +72,7 @@ inline std::string describe(const RandomElement& e) {
 }
 
 /// The element's F from its nodes, written out here so that no graded test needs ex 9.1.
-inline Matrix32 gradient_of(const std::array<FemVector3, 3>& x, const Matrix2& rest_inverse) {
+inline Matrix32 gradient_of(const std::array<Vec3, 3>& x, const Matrix2& rest_inverse) {
   Matrix32 edges;
   edges.col(0) = x[1] - x[0];
   edges.col(1) = x[2] - x[0];
@@ -80,7 +80,7 @@ inline Matrix32 gradient_of(const std::array<FemVector3, 3>& x, const Matrix2& r
 }
 
 /// The element's St Venant–Kirchhoff energy V (μ E:E + ½λ tr(E)²) [J] with its nodes at x.
-inline double energy_at(const std::array<FemVector3, 3>& x, const RandomElement& e) {
+inline double energy_at(const std::array<Vec3, 3>& x, const RandomElement& e) {
   const Matrix32 F = gradient_of(x, e.rest.inverse);
   const Matrix2 right_cauchy_green = F.transpose() * F;
   const Matrix2 E = (right_cauchy_green - Matrix2::Identity()) / 2;

@@ -36,7 +36,8 @@ The six submissions, generated from the solution markers:
     rk4.hpp             a wrong method, and a forged record through <unistd.h>, which the check
                         forbids, included as <Eigen/../../unistd.h> (an allowed prefix)
   hog           solved, in a copy made before the library took its folders (every kit header at
-                its old path, <kit/state.hpp>, which forwards to <kit/base/state.hpp>), but three
+                its old path, <kit/state.hpp>, which forwards to <kit/base/state.hpp>, and the old
+                names Vector3, Matrix3, FemVector3 and SpriteRandom), but three
                 files try to cost the class: a 256 MiB array in the object file
                 (fem_strain.hpp) and an endless loop (cloth_pcg.hpp), each of which costs only its
                 own exercise, and 4 MiB printed (sprite_over.hpp), which costs nothing: the output
@@ -104,6 +105,18 @@ def cache_counts(stderr, problems):
         problems.append(f"a sandboxed batch did not report its use of the program cache: {stderr[-500:]}")
         return -1, -1
     return int(found.group(1)), int(found.group(2))
+
+
+def old_names(name, text):
+    """An exercise file as a copy made before kit/base/vec3.hpp and kit/base/random.hpp wrote it:
+    the cloth's Vector3 and Matrix3, the element's FemVector3, the sprites' SpriteRandom."""
+    if name.startswith("cloth_"):
+        text = re.sub(r"\bMat3\b", "Matrix3", re.sub(r"\bVec3\b", "Vector3", text))
+    elif name.startswith("fem_"):
+        text = re.sub(r"\bVec3\b", "FemVector3", text)
+    elif name.startswith("sprite_"):
+        text = re.sub(r"\bRandom\b", "SpriteRandom", text).replace("<kit/random.hpp>", "<kit/sprite_random.hpp>")
+    return text
 
 
 def main(argv):
@@ -219,7 +232,8 @@ def main(argv):
     write(classroom / "forger", forger)
     forged = {"spring_system.hpp", "midpoint.hpp", "rigid_quaternion_step.hpp", "rk4.hpp"}
 
-    hog = {name: re.sub(r"#include <kit/\w+/(\w+\.hpp)>", r"#include <kit/\1>", text) for name, text in solved.items()}
+    hog = {name: old_names(name, re.sub(r"#include <kit/\w+/(\w+\.hpp)>", r"#include <kit/\1>", text))
+           for name, text in solved.items()}
     if hog == solved:
         sys.exit("FAILED: hog: no kit header to write at its old path")
     hog["fem_strain.hpp"] = prepend(hog["fem_strain.hpp"], "[[gnu::used]] static char kit_ballast[256 << 20] = {1};\n")

@@ -9,7 +9,7 @@
 
 namespace kit {
 
-ClothForces::ClothForces(const Springs& springs, const Eigen::VectorXd& masses, std::optional<Vector3> gravity,
+ClothForces::ClothForces(const Springs& springs, const Eigen::VectorXd& masses, std::optional<Vec3> gravity,
                          std::optional<double> drag)
     : masses_(masses), gravity_(gravity), drag_(drag) {
   // Order the springs by (offset, a), oriented so that a < b, then cut runs where a stops

@@ -16,20 +16,20 @@ void unflatten(const Eigen::VectorXd& flat, NodeArray& a) {
   for (Eigen::Index i = 0; i < a.rows(); ++i) a.row(i) = flat.segment<3>(3 * i).transpose();
 }
 
-Matrix3 spring_damping_block(const Vector3& xa, const Vector3& xb, double damping) {
-  const Vector3 gap = xa - xb;
+Mat3 spring_damping_block(const Vec3& xa, const Vec3& xb, double damping) {
+  const Vec3 gap = xa - xb;
   const double l = gap.norm();
-  if (l == 0 || damping == 0) return Matrix3::Zero();
-  const Vector3 along = gap / l;
+  if (l == 0 || damping == 0) return Mat3::Zero();
+  const Vec3 along = gap / l;
   return -damping * along * along.transpose();
 }
 
-void stiffness_times(const Springs& springs, const std::vector<Matrix3>& stiffness, const NodeArray& w,
+void stiffness_times(const Springs& springs, const std::vector<Mat3>& stiffness, const NodeArray& w,
                      Eigen::VectorXd& out) {
   out.setZero(3 * w.rows());
   for (std::size_t s = 0; s < springs.size(); ++s) {
     const auto a = springs.a[s], b = springs.b[s];
-    const Vector3 t = stiffness[s] * (w.row(a) - w.row(b)).transpose();
+    const Vec3 t = stiffness[s] * (w.row(a) - w.row(b)).transpose();
     out.segment<3>(3 * a) += t;
     out.segment<3>(3 * b) -= t;
   }
@@ -82,13 +82,13 @@ ImplicitMatrix::ImplicitMatrix(const Springs& springs, long nodes, const std::ve
   }
 }
 
-void ImplicitMatrix::assemble(const Springs& springs, const NodeArray& x, const std::vector<Matrix3>& stiffness,
+void ImplicitMatrix::assemble(const Springs& springs, const NodeArray& x, const std::vector<Mat3>& stiffness,
                               const Eigen::VectorXd& masses, std::optional<double> drag, double h) {
   double* values = matrix.valuePtr();
   const auto* outer = matrix.outerIndexPtr();
   std::fill(values, values + matrix.nonZeros(), 0.0);
   // Block (row_node, position) += sign·B, B's three rows going to the node's three rows.
-  const auto add = [&](std::int32_t row_node, std::int32_t position, const Matrix3& block) {
+  const auto add = [&](std::int32_t row_node, std::int32_t position, const Mat3& block) {
     for (int r = 0; r < 3; ++r) {
       double* row = values + outer[3 * row_node + r] + 3 * position;
       for (int c = 0; c < 3; ++c) row[c] += block(r, c);
@@ -101,7 +101,7 @@ void ImplicitMatrix::assemble(const Springs& springs, const NodeArray& x, const 
   for (std::size_t s = 0; s < springs.size(); ++s) {
     const auto a = springs.a[s], b = springs.b[s];
     // B = −h ∂f_a/∂v_a − h² ∂f_a/∂x_a: +B on the diagonal blocks (a, a), (b, b), −B off them.
-    Matrix3 block = -h * h * stiffness[s];
+    Mat3 block = -h * h * stiffness[s];
     if (springs.damping[s] != 0) block -= h * spring_damping_block(x.row(a), x.row(b), springs.damping[s]);
     const SpringSlots& slot = slots_[s];
     add(a, slot.aa, block);

@@ -27,7 +27,7 @@ BackwardEulerStepper::BackwardEulerStepper(const ClothSystem& cloth, ImplicitMet
       kernels_(kernels),
       matrix_(cloth.springs(), cloth.x.rows(), cloth.pins()),
       stiffness_(cloth.springs().size()),
-      filters_(std::size_t(cloth.x.rows()), Matrix3::Identity()) {
+      filters_(std::size_t(cloth.x.rows()), Mat3::Identity()) {
   if (method == ImplicitMethod::liu) throw std::invalid_argument("Liu et al.'s method has its own stepper");
   if (!kernels.stiffness_block) throw std::invalid_argument("no spring stiffness block (ex 7.1) was given");
   if (settings.solver == ImplicitSolver::pcg && !kernels.pcg)
@@ -50,13 +50,13 @@ void BackwardEulerStepper::set_filters(const ClothSystem& cloth, const NodeArray
   // normal) inside the solve, so the step itself cannot push it in. A node the forces pull off
   // is free again. "Resting" allows 1% of a sphere's radius: a step along the surface ends a
   // little outside a sphere, (h v)²/2R.
-  std::fill(filters_.begin(), filters_.end(), Matrix3::Identity());
+  std::fill(filters_.begin(), filters_.end(), Mat3::Identity());
   holds_.clear();
-  const auto hold = [&](Eigen::Index i, const Vector3& n, double friction) {
+  const auto hold = [&](Eigen::Index i, const Vec3& n, double friction) {
     // S stays a projector when a node meets two colliders: only the part of n still free is
     // removed (Gram–Schmidt on the normals).
-    Matrix3& filter = filters_[std::size_t(i)];
-    Vector3 u = filter * n;
+    Mat3& filter = filters_[std::size_t(i)];
+    Vec3 u = filter * n;
     if (u.norm() < 1e-9) return;
     u.normalize();
     filter -= u * u.transpose();
@@ -65,11 +65,11 @@ void BackwardEulerStepper::set_filters(const ClothSystem& cloth, const NodeArray
   };
   if (const auto& ground = cloth.scene().ground)
     for (Eigen::Index i = 0; i < cloth.x.rows(); ++i)
-      if (cloth.x(i, 1) <= ground->height && f(i, 1) <= 0) hold(i, Vector3::UnitY(), ground->friction);
+      if (cloth.x(i, 1) <= ground->height && f(i, 1) <= 0) hold(i, Vec3::UnitY(), ground->friction);
   for (const SphereCollider& sphere : cloth.scene().spheres) {
     const double radius = contact_radius(cloth.scene().grid, sphere);
     for (Eigen::Index i = 0; i < cloth.x.rows(); ++i) {
-      const Vector3 r = cloth.x.row(i).transpose() - sphere.center;
+      const Vec3 r = cloth.x.row(i).transpose() - sphere.center;
       const double d = r.norm();
       if (d > 0 && d <= 1.01 * radius && f.row(i).dot(r) <= 0) hold(i, r / d, sphere.friction);
     }
@@ -82,8 +82,8 @@ void BackwardEulerStepper::friction(ClothSystem& cloth, double h) const {
   // pressed them in, over h, takes up to μ h N / m off the tangential speed (never reversing it).
   for (const Hold& held : holds_) {
     if (held.friction == 0 || cloth.inverse_masses()[held.node] == 0) continue;
-    Vector3 v = cloth.v.row(held.node);
-    const Vector3 tangential = v - v.dot(held.normal) * held.normal;
+    Vec3 v = cloth.v.row(held.node);
+    const Vec3 tangential = v - v.dot(held.normal) * held.normal;
     const double speed = tangential.norm(), loss = held.friction * h * held.pressure * cloth.inverse_masses()[held.node];
     if (speed == 0) continue;
     v -= std::min(1.0, loss / speed) * tangential;

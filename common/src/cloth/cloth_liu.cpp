@@ -43,7 +43,7 @@ void LiuStepper::step(ClothSystem& cloth, double h) {
   const double drag = 1 + h * cloth.scene().drag.value_or(0.0);
   const Springs& springs = cloth.springs();
   const Eigen::VectorXd& m = cloth.masses();
-  const Vector3 g = cloth.scene().gravity.value_or(Vector3::Zero());
+  const Vec3 g = cloth.scene().gravity.value_or(Vec3::Zero());
   // y = x_n + h v_n + h² g, the inertial guess, and the first iterate.
   y_.resize(free_count_, 3);
   NodeArray x = cloth.x;
@@ -59,14 +59,14 @@ void LiuStepper::step(ClothSystem& cloth, double h) {
       if (free_[i] >= 0) rhs_.row(free_[i]) *= m[Eigen::Index(i)] * drag;
     for (std::size_t s = 0; s < springs.size(); ++s) {
       const auto a = springs.a[s], b = springs.b[s];
-      const Vector3 p = x.row(a) - x.row(b);
+      const Vec3 p = x.row(a) - x.row(b);
       const double l = p.norm();
       // local: the spring's nearest rest-length vector d to the present x_a − x_b
-      const Vector3 d = l > 0 ? Vector3(springs.rest[s] / l * p) : Vector3::Zero();
+      const Vec3 d = l > 0 ? Vec3(springs.rest[s] / l * p) : Vec3::Zero();
       const double w = h * h * springs.stiffness[s];
       const auto fa = free_[std::size_t(a)], fb = free_[std::size_t(b)];
-      if (fa >= 0) rhs_.row(fa) += w * (d + (fb < 0 ? Vector3(x.row(b)) : Vector3::Zero())).transpose();
-      if (fb >= 0) rhs_.row(fb) += w * ((fa < 0 ? Vector3(x.row(a)) : Vector3::Zero()) - d).transpose();
+      if (fa >= 0) rhs_.row(fa) += w * (d + (fb < 0 ? Vec3(x.row(b)) : Vec3::Zero())).transpose();
+      if (fb >= 0) rhs_.row(fb) += w * ((fa < 0 ? Vec3(x.row(a)) : Vec3::Zero()) - d).transpose();
     }
     solution_ = cholesky_.solve(rhs_);  // global
     if (!solution_.allFinite()) throw SolveFailed("Liu et al.'s global solve returned non-finite positions");

@@ -248,7 +248,7 @@ void GridMultigrid::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
   for (int i = 0; i < finest.nodes(); ++i) z.segment<3>(3 * i) = finest.x[std::size_t(i)].head<3>().cast<double>();
 }
 
-PcgResult multigrid_pcg(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Matrix3>& filters,
+PcgResult multigrid_pcg(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Mat3>& filters,
                         GridMultigrid& multigrid, double tolerance, int max_iterations) {
   const auto project = [&filters](Eigen::VectorXd& w) {  // w ← S w, node by node
     for (std::size_t i = 0; i < filters.size(); ++i) w.segment<3>(3 * Eigen::Index(i)) = filters[i] * w.segment<3>(3 * Eigen::Index(i));

@@ -32,13 +32,13 @@ constexpr double max_acceleration = 1000;  // [m/s²]
 // Below this |v − (v·u)u|/|v|, v is too close to u for the grid to span an area.
 constexpr double parallel_tolerance = 1e-6;
 
-Vector3 to_vector(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+Vec3 to_vector(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
 /// A direction: three numbers, not all zero.
-Vector3 direction(const Section& s, std::string_view k, const Vector3& fallback) {
+Vec3 direction(const Section& s, std::string_view k, const Vec3& fallback) {
   const auto a = s.vec3(k, symmetric(max_coordinate));
   if (!a) return fallback;
-  const Vector3 d = to_vector(*a);
+  const Vec3 d = to_vector(*a);
   if (!(d.norm() > 0)) s.reader().bad(*s.find(k), s.key(k), "must not be zero: it is a direction");
   return d;
 }
@@ -73,9 +73,9 @@ void read_grid(const Section& s, ClothGrid& grid) {
 
   // u and v as given may be any lengths and need not be orthogonal: the grid's rest shape is
   // rectangular, so v keeps only its part orthogonal to u (Gram–Schmidt).
-  const Vector3 u = direction(s, "u", grid.u).normalized();
-  const Vector3 v_given = direction(s, "v", grid.v);
-  const Vector3 v = v_given - v_given.dot(u) * u;
+  const Vec3 u = direction(s, "u", grid.u).normalized();
+  const Vec3 v_given = direction(s, "v", grid.v);
+  const Vec3 v = v_given - v_given.dot(u) * u;
   if (!(v.norm() > parallel_tolerance * v_given.norm())) {
     const std::string why = fmt::format(
         "must not be parallel to u = [{}, {}, {}]: the sheet would have no area", u.x(), u.y(), u.z());

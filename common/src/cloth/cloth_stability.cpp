@@ -17,11 +17,11 @@ void stiffness_times(const Springs& springs, const NodeArray& x, const NodeArray
   y.setZero(u.rows(), 3);
   for (std::size_t s = 0; s < springs.size(); ++s) {
     const auto a = springs.a[s], b = springs.b[s];
-    const Vector3 d = x.row(a) - x.row(b);
+    const Vec3 d = x.row(a) - x.row(b);
     const double l = d.norm();
     if (l == 0) continue;
-    const Vector3 along = d / l;
-    const Vector3 force = springs.stiffness[s] * along.dot((u.row(a) - u.row(b)).transpose()) * along;
+    const Vec3 along = d / l;
+    const Vec3 force = springs.stiffness[s] * along.dot((u.row(a) - u.row(b)).transpose()) * along;
     y.row(a) += force.transpose(), y.row(b) -= force.transpose();
   }
 }

@@ -124,12 +124,12 @@ void ClothSystem::limit_strain(double dt) {
     for (std::size_t s = 0; s < springs_.size(); ++s) {
       if (springs_.kind[s] == SpringKind::bend) continue;
       const auto a = springs_.a[s], b = springs_.b[s];
-      const Vector3 d = x.row(a) - x.row(b);
+      const Vec3 d = x.row(a) - x.row(b);
       const double l = d.norm(), longest = (1 + limit.max_strain) * springs_.rest[s];
       if (!(l > longest)) continue;
       const double wa = inverse_mass_[a] > 0, wb = inverse_mass_[b] > 0;
       if (wa + wb == 0) continue;
-      const Vector3 shift = (l - longest) / (wa + wb) * d / l;
+      const Vec3 shift = (l - longest) / (wa + wb) * d / l;
       x.row(a) -= wa * shift.transpose(), v.row(a) -= wa / dt * shift.transpose();
       x.row(b) += wb * shift.transpose(), v.row(b) += wb / dt * shift.transpose();
       ++corrected;

@@ -38,7 +38,7 @@ Springs edge_springs(const TriangleMesh& mesh, const FemMaterial& material) {
   return springs;
 }
 
-Vector3 node3(const NodeArray& x, int i) { return x.row(i).transpose(); }
+Vec3 node3(const NodeArray& x, int i) { return x.row(i).transpose(); }
 
 /// The node pairs whose 3×3 blocks each element (3 × 3 pairs) or spring (a-a, a-b, b-a, b-b)
 /// fills, in the order stiffness() fills them.
@@ -73,7 +73,7 @@ FemBody::FemBody(TriangleMesh mesh, const FemMaterial& material, FemModel model,
   v = NodeArray::Zero(n, 3);
   loads = NodeArray::Zero(n, 3);
   masses = Eigen::VectorXd::Zero(n);
-  filters.assign(n, Matrix3::Identity());
+  filters.assign(n, Mat3::Identity());
   rest_.reserve(mesh_.triangles.size());
   for (const auto& tri : mesh_.triangles) {
     rest_.push_back(rest_triangle(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]], material.thickness));
@@ -118,7 +118,7 @@ void FemBody::forces(NodeArray& out, double drag) const {
   if (model_ == FemModel::springs) {
     for (std::size_t s = 0; s < springs_.size(); ++s) {
       const int a = springs_.a[s], b = springs_.b[s];
-      const Vector3 f = kernels_.spring_force(node3(x, a), node3(x, b), node3(v, a), node3(v, b), springs_.rest[s],
+      const Vec3 f = kernels_.spring_force(node3(x, a), node3(x, b), node3(v, a), node3(v, b), springs_.rest[s],
                                               SpringFamily{springs_.stiffness[s], 0.0});
       out.row(a) += f.transpose();
       out.row(b) -= f.transpose();
@@ -152,7 +152,7 @@ void FemBody::stiffness(SparseMatrix& out) const {
   if (model_ == FemModel::springs) {
     for (std::size_t s = 0; s < springs_.size(); ++s) {
       const int a = springs_.a[s], b = springs_.b[s];
-      const Matrix3 J =
+      const Mat3 J =
           kernels_.spring_stiffness(node3(x, a), node3(x, b), springs_.rest[s], springs_.stiffness[s], false);
       add_block(J);  // a-a
       add_block(-J);  // a-b

@@ -59,7 +59,7 @@ Matrix9 linear_stiffness(const Matrix2& rest_inverse, double rest_volume, const 
   Matrix9 K = Matrix9::Zero();
   for (int node = 0; node < 3; ++node)
     for (int axis = 0; axis < 2; ++axis) {
-      FemVector3 x[3] = {FemVector3::Zero(), FemVector3::Zero(), FemVector3::Zero()};
+      Vec3 x[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
       x[1].head<2>() = rest_edges.col(0);
       x[2].head<2>() = rest_edges.col(1);
       x[node][axis] += 1;

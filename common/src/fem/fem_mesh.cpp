@@ -2,11 +2,12 @@
 
 #include <cmath>
 #include <map>
-#include <random>
 #include <stdexcept>
 #include <utility>
 
 #include <fmt/format.h>
+
+#include <kit/base/random.hpp>
 
 namespace kit {
 namespace {
@@ -95,15 +96,13 @@ TriangleMesh irregular_rectangle_mesh(double width, double height, int nx, int n
   // Each cell split along the diagonal that keeps both triangles counter-clockwise once the nodes
   // have moved (a moved cell may be a non-convex quadrilateral: one of its diagonals always works).
   TriangleMesh mesh = regular_rectangle_mesh(width, height, nx, ny, CellDiagonal::rising);
-  std::mt19937_64 random(seed);  // the engine's sequence is fixed by the standard
-  const auto unit = [&random] { return double(random() >> 11) * 0x1.0p-53; };  // [0, 1), not a distribution:
-                                                                             // those differ between libraries
+  Random random(seed);
   const double dx = width / nx, dy = height / ny;
   for (int j = 1; j < ny; ++j)
     for (int i = 1; i < nx; ++i) {
       auto& node = mesh.nodes[std::size_t(j * (nx + 1) + i)];
-      node.x() += (2 * unit() - 1) * jitter * dx;
-      node.y() += (2 * unit() - 1) * jitter * dy;
+      node.x() += (2 * random.unit() - 1) * jitter * dx;
+      node.y() += (2 * random.unit() - 1) * jitter * dy;
     }
   for (std::size_t t = 0; t < mesh.triangles.size(); t += 2) {
     auto& first = mesh.triangles[t];

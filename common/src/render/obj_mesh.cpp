@@ -25,10 +25,10 @@ void check_shape(const ClothGrid& grid, const NodeArray& x) {
 }
 
 // The sheet's own orientation: u×v, or world up when u and v are parallel or not finite.
-Vector3 sheet_normal(const ClothGrid& grid) {
-  const Vector3 n = grid.u.cross(grid.v);
+Vec3 sheet_normal(const ClothGrid& grid) {
+  const Vec3 n = grid.u.cross(grid.v);
   const double length = n.norm();
-  return std::isfinite(length) && length > 0 ? Vector3(n / length) : Vector3(0, 1, 0);
+  return std::isfinite(length) && length > 0 ? Vec3(n / length) : Vec3(0, 1, 0);
 }
 
 std::vector<std::string_view> words_of(std::string_view line) {
@@ -52,8 +52,8 @@ NodeArray vertex_normals(const ClothGrid& grid, const NodeArray& x) {
   NodeArray sum = NodeArray::Zero(x.rows(), 3);
   auto add_triangle = [&](long a, long b, long c) {
     // |(b − a) × (c − a)| is twice the triangle's area: summing the raw products weights by area.
-    const Vector3 pa = x.row(a), pb = x.row(b), pc = x.row(c);
-    const Vector3 n = (pb - pa).cross(pc - pa);
+    const Vec3 pa = x.row(a), pb = x.row(b), pc = x.row(c);
+    const Vec3 n = (pb - pa).cross(pc - pa);
     if (!n.allFinite()) return;  // a diverged node must not poison its neighbours' normals
     sum.row(a) += n.transpose(), sum.row(b) += n.transpose(), sum.row(c) += n.transpose();
   };
@@ -63,7 +63,7 @@ NodeArray vertex_normals(const ClothGrid& grid, const NodeArray& x) {
       add_triangle(a, b, c);
       add_triangle(a, c, d);
     }
-  const Vector3 fallback = sheet_normal(grid);
+  const Vec3 fallback = sheet_normal(grid);
   for (long k = 0; k < sum.rows(); ++k) {
     const double length = sum.row(k).norm();
     if (std::isfinite(length) && length > 1e-300) sum.row(k) /= length;
@@ -125,7 +125,7 @@ ObjMesh read_obj(const std::filesystem::path& path) {
     if (key == "o" || key == "g" || key == "s") continue;
     if (key == "v" || key == "vn") {
       if (words.size() != 4) throw fail(fmt::format("'{}' needs 3 numbers, not {}", key, words.size() - 1));
-      const Vector3 value(number(words[1]), number(words[2]), number(words[3]));
+      const Vec3 value(number(words[1]), number(words[2]), number(words[3]));
       (key == "v" ? mesh.positions : mesh.normals).push_back(value);
     } else if (key == "f") {
       if (words.size() != 4) throw fail(fmt::format("a face needs 3 vertices, not {}", words.size() - 1));

@@ -8,20 +8,20 @@ constexpr Vec3d ground_light{0.70, 0.68, 0.63}, ground_dark{0.46, 0.44, 0.41};
 
 // The fill light: from the side opposite the key (and a little from below the horizon's glow).
 constexpr double fill_strength = 0.22;
-const Vector3 fill_light = Vector3(0.6, 0.25, -0.35).normalized();
-const Vector3 key_light = to_vector3(cloth_key_light).normalized();
+const Vec3 fill_light = Vec3(0.6, 0.25, -0.35).normalized();
+const Vec3 key_light = to_vector3(cloth_key_light).normalized();
 
 // What the ray sees of the sky and the ground (draw_backdrop).
-RayHit backdrop_hit(const SpriteCamera& camera, const Vector3& ray, const std::optional<double>& ground_height,
+RayHit backdrop_hit(const SpriteCamera& camera, const Vec3& ray, const std::optional<double>& ground_height,
                     const ShadowTest& in_shadow) {
   const double inv_ray_length = 1 / ray.norm();
   RayHit hit{cloth_sky(ray.y() * inv_ray_length)};
   if (!ground_height || ray.y() == 0) return hit;
   // The ray's view-axis component is 1, so the parameter t along it is the depth.
-  const Vector3 eye = to_vector3(camera.eye());
+  const Vec3 eye = to_vector3(camera.eye());
   const double t = (*ground_height - eye.y()) / ray.y();
   if (!(t >= SpriteCamera::near_depth)) return hit;
-  const Vector3 p = eye + t * ray;
+  const Vec3 p = eye + t * ray;
   const bool light_square = (long(std::floor(p.x() / ground_checker_square)) +
                              long(std::floor(p.z() / ground_checker_square))) % 2 == 0;
   // A pixel spans about t/F metres across (more at grazing angles); once a square is only a few
@@ -41,9 +41,9 @@ DepthCanvas::DepthCanvas(int width, int height, const Vec3d& fill)
     : image(width, height, fill),
       depth(std::size_t(width) * std::size_t(height), std::numeric_limits<float>::infinity()) {}
 
-Vector3 key_light_direction() { return key_light; }
+Vec3 key_light_direction() { return key_light; }
 
-double light_intensity(const Vector3& unit_normal) {
+double light_intensity(const Vec3& unit_normal) {
   return std::min(1.0, cloth_ambient + (1 - cloth_ambient) * std::max(0.0, unit_normal.dot(key_light)) +
                            fill_strength * std::max(0.0, unit_normal.dot(fill_light)));
 }
@@ -62,7 +62,7 @@ void draw_backdrop(const SpriteCamera& camera, const std::optional<double>& grou
   auto cast_every_ray = [&](auto&& foreground) {
     for (int py = 0; py < canvas.image.height; ++py)
       for (int px = 0; px < canvas.image.width; ++px) {
-        const Vector3 ray = to_vector3(camera.ray(px + 0.5, py + 0.5));
+        const Vec3 ray = to_vector3(camera.ray(px + 0.5, py + 0.5));
         RayHit hit = backdrop_hit(camera, ray, ground_height, in_shadow);
         foreground(ray, hit);
         canvas.put(px, py, hit.colour);
@@ -70,10 +70,10 @@ void draw_backdrop(const SpriteCamera& camera, const std::optional<double>& grou
       }
   };
   if (in_front) cast_every_ray(in_front);
-  else cast_every_ray([](const Vector3&, RayHit&) {});
+  else cast_every_ray([](const Vec3&, RayHit&) {});
 }
 
-std::optional<ScreenVertex> screen_vertex(const SpriteCamera& camera, const Vector3& point) {
+std::optional<ScreenVertex> screen_vertex(const SpriteCamera& camera, const Vec3& point) {
   if (!point.allFinite()) return std::nullopt;
   const auto p = camera.project(point.x(), point.y(), point.z());
   if (!p || !(std::abs(p->px) < max_pixel_coordinate) || !(std::abs(p->py) < max_pixel_coordinate))

@@ -55,7 +55,7 @@ class BodyShadow {
   // Whether there is a body to cast a shadow (a finite position and an invertible R).
   bool casts() const { return casts_; }
 
-  bool operator()(const Vector3& ground_point) const {
+  bool operator()(const Vec3& ground_point) const {
     const Vec3 origin = to_body_ * (ground_point - x_);
     // |o + t d|² = r² has a root t ≥ 0 unless the ray misses the sphere or starts outside it
     // (c > 0) going away (o·d > 0).
@@ -102,10 +102,10 @@ Image render_rigid(const RigidShape& shape, const RigidState& state, const Camer
   DepthCanvas canvas(width, height, cloth_sky_top);
   const BodyShadow shadow(shape, state);
   ShadowTest in_shadow;
-  if (shadow.casts()) in_shadow = [&shadow](const Vector3& p) { return shadow(p); };
+  if (shadow.casts()) in_shadow = [&shadow](const Vec3& p) { return shadow(p); };
   draw_backdrop(camera, 0.0, in_shadow, {}, canvas);  // the ground y = 0
 
-  const Vector3 eye = to_vector3(camera.eye());
+  const Vec3 eye = to_vector3(camera.eye());
   for (const RigidFace& face : rigid_faces(shape, state)) {
     // A closed box hides the faces turned away from the eye behind the others: skipping them
     // halves the work. (False for a non-finite face too, which is not drawn.)

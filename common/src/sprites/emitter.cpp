@@ -21,13 +21,13 @@ std::pair<Vec3d, Vec3d> basis_around(const Vec3d& axis) {
 }
 }  // namespace
 
-long emission_count(const Spread& rate, SpriteRandom& random) {
+long emission_count(const Spread& rate, Random& random) {
   const double n = std::max(draw(rate, random), 0.0);
   const double whole = std::floor(n);
   return long(whole) + (random.unit() < n - whole ? 1 : 0);
 }
 
-Vec3d direction_in_cap(const Vec3d& axis, double angle_deg, SpriteRandom& random) {
+Vec3d direction_in_cap(const Vec3d& axis, double angle_deg, Random& random) {
   // Archimedes: on the unit sphere, area is uniform in cos θ, so cos θ uniform gives a uniform cap.
   const double cos_max = std::cos(angle_deg * std::numbers::pi / 180.0);
   const double cos_t = 1.0 - random.unit() * (1.0 - cos_max);
@@ -39,7 +39,7 @@ Vec3d direction_in_cap(const Vec3d& axis, double angle_deg, SpriteRandom& random
   return d;
 }
 
-Vec3d offset_in_disc(const Vec3d& axis, double radius, SpriteRandom& random) {
+Vec3d offset_in_disc(const Vec3d& axis, double radius, Random& random) {
   const auto [u, w] = basis_around(axis);
   const double r = radius * std::sqrt(random.unit()), phi = 2.0 * std::numbers::pi * random.unit();
   Vec3d p;
@@ -47,7 +47,7 @@ Vec3d offset_in_disc(const Vec3d& axis, double radius, SpriteRandom& random) {
   return p;
 }
 
-BallPoint point_in_ball(double radius, SpriteRandom& random) {
+BallPoint point_in_ball(double radius, Random& random) {
   const Vec3d d = direction_in_cap({0, 1, 0}, 180.0, random);
   const double r = radius * std::cbrt(random.unit());
   return {{r * d[0], r * d[1], r * d[2]}, d};

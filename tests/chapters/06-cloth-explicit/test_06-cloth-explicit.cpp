@@ -78,7 +78,7 @@ TEST_CASE("cloth: the vectorised force pass equals the spring-by-spring sum of e
   kit::ClothScene scene = square_sheet(9, true, true);
   scene.springs.structural->damping = 0.3, scene.springs.shear->damping = 0.2, scene.springs.bend->damping = 0.1;
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
-  const kit::ClothForces forces(springs, scene.grid.node_masses(), kit::Vector3(0, -9.81, 0), 0.5);
+  const kit::ClothForces forces(springs, scene.grid.node_masses(), kit::Vec3(0, -9.81, 0), 0.5);
   std::mt19937_64 random(4);
   std::uniform_real_distribution<double> jitter(-0.02, 0.02);
   kit::NodeArray x = scene.grid.rest_positions(), v(x.rows(), 3), f;
@@ -87,10 +87,10 @@ TEST_CASE("cloth: the vectorised force pass equals the spring-by-spring sum of e
   forces(x, v, f);
   kit::NodeArray expected(x.rows(), 3);
   for (Eigen::Index i = 0; i < x.rows(); ++i)
-    expected.row(i) = forces.masses()[i] * (kit::Vector3(0, -9.81, 0) - 0.5 * v.row(i).transpose()).transpose();
+    expected.row(i) = forces.masses()[i] * (kit::Vec3(0, -9.81, 0) - 0.5 * v.row(i).transpose()).transpose();
   for (std::size_t s = 0; s < springs.size(); ++s) {
     const auto a = springs.a[s], b = springs.b[s];
-    const kit::Vector3 fa = kit::spring_force(x.row(a), x.row(b), v.row(a), v.row(b), springs.rest[s],
+    const kit::Vec3 fa = kit::spring_force(x.row(a), x.row(b), v.row(a), v.row(b), springs.rest[s],
                                               {springs.stiffness[s], springs.damping[s]});
     expected.row(a) += fa.transpose(), expected.row(b) -= fa.transpose();
   }
@@ -113,7 +113,7 @@ TEST_CASE("cloth: a pinned sheet at rest with no gravity stays at rest to round-
 
 TEST_CASE("cloth: pins hold under gravity, on the ground and inside a sphere, for every integrator", "[cloth]") {
   kit::ClothScene scene = square_sheet(10, true, false);
-  scene.gravity = kit::Vector3(0, -9.81, 0);
+  scene.gravity = kit::Vec3(0, -9.81, 0);
   scene.grid.origin = {0, 0.05, 0};
   scene.pins = {{0, 0}, {-1, -1}};
   scene.ground = kit::GroundCollider{0.1, 0.5};                      // the sheet starts below it
@@ -207,7 +207,7 @@ TEST_CASE("cloth: what a scene does not list is neither built nor computed", "[c
   CHECK(bare.work.spring_terms_by_kind[int(kit::SpringKind::bend)] == 0);
   CHECK(bare.work.gravity_terms + bare.work.drag_terms + bare.work.sphere_tests + bare.work.ground_tests == 0);
   CHECK(bare.work.strain_passes == 0);
-  scene.gravity = kit::Vector3(0, -9.81, 0), scene.ground = kit::GroundCollider{-1, 0};
+  scene.gravity = kit::Vec3(0, -9.81, 0), scene.ground = kit::GroundCollider{-1, 0};
   kit::ClothSystem full(scene, springs, kernels);
   full.step(kit::ClothIntegrator::symplectic_euler, 1e-4);
   CHECK(full.work.gravity_terms == scene.grid.nodes());

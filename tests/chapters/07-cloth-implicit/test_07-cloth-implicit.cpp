@@ -61,9 +61,9 @@ kit::ClothSystem swinging(const kit::ClothScene& scene, double t = 0.05) {
   return cloth;
 }
 /// ∂f_a/∂x_a of every spring of the cloth as it is (ex 7.1, unclamped).
-std::vector<kit::Matrix3> unclamped_blocks(const kit::ClothSystem& cloth) {
+std::vector<kit::Mat3> unclamped_blocks(const kit::ClothSystem& cloth) {
   const kit::Springs& springs = cloth.springs();
-  std::vector<kit::Matrix3> blocks(springs.size());
+  std::vector<kit::Mat3> blocks(springs.size());
   for (std::size_t s = 0; s < springs.size(); ++s)
     blocks[s] = kit::spring_stiffness_block(cloth.x.row(springs.a[s]), cloth.x.row(springs.b[s]), springs.rest[s],
                                             springs.stiffness[s], false);
@@ -75,7 +75,7 @@ TEST_CASE("implicit cloth: (M − A)/h² is ∂f/∂x, matching central differen
   const kit::ClothScene scene = sheet(1e3);
   kit::ClothSystem cloth = swinging(scene);
   const kit::Springs& springs = cloth.springs();
-  const std::vector<kit::Matrix3> blocks = unclamped_blocks(cloth);
+  const std::vector<kit::Mat3> blocks = unclamped_blocks(cloth);
   const double h = 0.01;
   kit::ImplicitMatrix matrix(springs, cloth.x.rows(), {});
   matrix.assemble(springs, cloth.x, blocks, cloth.masses(), std::nullopt, h);  // undamped: no ∂f/∂v
@@ -103,7 +103,7 @@ TEST_CASE("implicit cloth: (M(1 + hc) − A − h²∂f/∂x)/h is ∂f/∂v, ma
     if (*family) (*family)->damping = 0.5;
   kit::ClothSystem cloth = swinging(scene);
   const kit::Springs& springs = cloth.springs();
-  const std::vector<kit::Matrix3> blocks = unclamped_blocks(cloth);
+  const std::vector<kit::Mat3> blocks = unclamped_blocks(cloth);
   const double h = 0.01;
   kit::ImplicitMatrix matrix(springs, cloth.x.rows(), {});
   matrix.assemble(springs, cloth.x, blocks, cloth.masses(), scene.drag, h);
@@ -345,7 +345,7 @@ TEST_CASE("multigrid: the V-cycle is symmetric positive definite and its PCG agr
       CHECK(r.dot(br) > 0);
     }
     const Eigen::VectorXd b = random_vector(A.rows(), random);
-    const std::vector<kit::Matrix3> free(std::size_t(scene.grid.nodes()), kit::Matrix3::Identity());
+    const std::vector<kit::Mat3> free(std::size_t(scene.grid.nodes()), kit::Mat3::Identity());
     const kit::PcgResult pcg = kit::multigrid_pcg(A, b, free, multigrid, 1e-10, 500);
     CHECK(pcg.converged);
     CHECK(pcg.residual <= 1e-10);
@@ -369,7 +369,7 @@ TEST_CASE("multigrid: CG needs an order of magnitude fewer iterations than with 
       const Eigen::VectorXd b = random_vector(A.rows(), random);
       kit::GridMultigrid multigrid(scene.grid.nx, scene.grid.ny, A);
       REQUIRE(multigrid.setup(A));
-      const std::vector<kit::Matrix3> free(std::size_t(scene.grid.nodes()), kit::Matrix3::Identity());
+      const std::vector<kit::Mat3> free(std::size_t(scene.grid.nodes()), kit::Mat3::Identity());
       const kit::PcgResult pcg = kit::multigrid_pcg(A, b, free, multigrid, 1e-6, 500);
       Eigen::ConjugateGradient<kit::SparseMatrix, Eigen::Lower | Eigen::Upper> cg;
       cg.setTolerance(1e-6);

@@ -83,9 +83,9 @@ TEST_CASE("a bent sheet's OBJ reads back: counts, positions, unit normals agreei
   }
   // Each face's own normal (from its winding) points the way its vertices' normals do.
   for (const auto& face : mesh.faces) {
-    const kit::Vector3 &a = mesh.positions[std::size_t(face[0])], &b = mesh.positions[std::size_t(face[1])],
+    const kit::Vec3 &a = mesh.positions[std::size_t(face[0])], &b = mesh.positions[std::size_t(face[1])],
                        &c = mesh.positions[std::size_t(face[2])];
-    const kit::Vector3 n = (b - a).cross(c - a).normalized();
+    const kit::Vec3 n = (b - a).cross(c - a).normalized();
     for (const int v : face) CHECK(n.dot(mesh.normals[std::size_t(v)]) > 0.5);
     // and the winding keeps the sheet's orientation: u × v here is −y, the bump is gentle.
     CHECK(n.dot(grid.u.cross(grid.v)) > 0.3);
@@ -130,8 +130,8 @@ TEST_CASE("read_obj refuses malformed lines and indices out of range, naming the
 TEST_CASE("a flat sheet's vertex normals are its u x v; a collapsed one falls back to it", "[cloth]") {
   kit::ClothGrid grid;
   grid.nx = 6, grid.ny = 3, grid.width = 2, grid.height = 0.5;
-  grid.u = kit::Vector3(1, 0, 1).normalized(), grid.v = {0, 1, 0};
-  const kit::Vector3 expected = grid.u.cross(grid.v).normalized();
+  grid.u = kit::Vec3(1, 0, 1).normalized(), grid.v = {0, 1, 0};
+  const kit::Vec3 expected = grid.u.cross(grid.v).normalized();
   kit::NodeArray x = flat_positions(grid);
   kit::NodeArray n = kit::vertex_normals(grid, x);
   for (long k = 0; k < n.rows(); ++k) CHECK((n.row(k).transpose() - expected).norm() < 1e-12);

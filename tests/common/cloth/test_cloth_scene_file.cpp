@@ -129,8 +129,8 @@ TEST_CASE("a minimal scene keeps the defaults and builds only what it names", "[
   CHECK_FALSE(s.ground);
   CHECK(s.pins.empty());
   CHECK(s.dt == kit::ClothScene{}.dt);
-  CHECK(s.grid.u == kit::Vector3(1, 0, 0));
-  CHECK(s.grid.v == kit::Vector3(0, 0, 1));
+  CHECK(s.grid.u == kit::Vec3(1, 0, 0));
+  CHECK(s.grid.v == kit::Vec3(0, 0, 1));
 }
 
 TEST_CASE("u is normalised and v made orthogonal to it", "[cloth]") {
@@ -144,8 +144,8 @@ v = [3, 4, 0]
 stiffness = 100
 )",
                                         "scenes/test.toml");
-  CHECK(s.grid.u.isApprox(kit::Vector3(1, 0, 0)));
-  CHECK(s.grid.v.isApprox(kit::Vector3(0, 1, 0)));
+  CHECK(s.grid.u.isApprox(kit::Vec3(1, 0, 0)));
+  CHECK(s.grid.v.isApprox(kit::Vec3(0, 1, 0)));
 }
 
 TEST_CASE("every bad key or value names the file, the line and the key", "[cloth]") {

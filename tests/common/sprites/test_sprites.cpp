@@ -48,7 +48,7 @@ TEST_CASE("swap-remove keeps the particles dense and never reallocates", "[sprit
 }
 
 TEST_CASE("particles per frame follow mean + rand·variance, fractions included", "[sprites]") {
-  kit::SpriteRandom random(7);
+  kit::Random random(7);
   for (const kit::Spread rate : {kit::Spread{40, 10}, kit::Spread{0.3, 0}, kit::Spread{2.5, 1}}) {
     const int frames = 200000;
     double sum = 0;
@@ -62,7 +62,7 @@ TEST_CASE("particles per frame follow mean + rand·variance, fractions included"
 
 TEST_CASE("directions are uniform over the cap: inside the cone, E[cos θ] = (1 + cos θmax)/2",
           "[sprites]") {
-  kit::SpriteRandom random(11);
+  kit::Random random(11);
   const int n = 100000;
   const kit::Vec3d axis{0, 0.6, 0.8};
   for (const double angle : {20.0, 90.0, 180.0}) {
@@ -83,7 +83,7 @@ TEST_CASE("directions are uniform over the cap: inside the cone, E[cos θ] = (1 
 }
 
 TEST_CASE("points are uniform over the disc's area and the ball's volume", "[sprites]") {
-  kit::SpriteRandom random(5);
+  kit::Random random(5);
   const int n = 100000;
   int disc_inner = 0, ball_inner = 0;
   double off_plane = 0;

@@ -9,7 +9,7 @@ using namespace kit;
 void register_entries(remote::Entries& e) {
   e.add("assemble_implicit_system",
         [](const Springs& springs, const NodeArray& x, const NodeArray& v, const NodeArray& f,
-           const Eigen::VectorXd& masses, const std::vector<Matrix3>& stiffness,
+           const Eigen::VectorXd& masses, const std::vector<Mat3>& stiffness,
            const std::optional<double>& drag, double h, SparseMatrix& A, Eigen::VectorXd& b) {
           const ImplicitSystemInput in{springs, x, v, f, masses, stiffness, drag, h};
           assemble_implicit_system(in, A, b);

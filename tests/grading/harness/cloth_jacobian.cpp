@@ -4,11 +4,11 @@
 #include "remote/fields/cloth_implicit_kernels.hpp"
 #include "remote/student.hpp"
 
-using kit::Vector3;
+using kit::Vec3;
 
 void register_entries(kit::remote::Entries& e) {
   e.add("spring_stiffness_block",
-        [](const Vector3& xa, const Vector3& xb, double rest, double stiffness, bool clamp) {
+        [](const Vec3& xa, const Vec3& xb, double rest, double stiffness, bool clamp) {
           return kit::spring_stiffness_block(xa, xb, rest, stiffness, clamp);
         });
 }

@@ -6,7 +6,7 @@
 
 void register_entries(kit::remote::Entries& e) {
   e.add("filtered_pcg", [](const kit::SparseMatrix& A, const Eigen::VectorXd& b,
-                           const std::vector<kit::Matrix3>& filters, double tolerance, int max_iterations) {
+                           const std::vector<kit::Mat3>& filters, double tolerance, int max_iterations) {
     return kit::filtered_pcg(A, b, filters, tolerance, max_iterations);
   });
 }

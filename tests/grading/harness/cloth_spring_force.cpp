@@ -4,12 +4,12 @@
 #include "remote/fields/cloth.hpp"
 #include "remote/student.hpp"
 
-using kit::Vector3;
+using kit::Vec3;
 
 void register_entries(kit::remote::Entries& e) {
   e.add("spring_force",
-        [](const Vector3& xa, const Vector3& xb, const Vector3& va, const Vector3& vb, double rest,
-           const kit::SpringFamily& family) -> Vector3 {
+        [](const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double rest,
+           const kit::SpringFamily& family) -> Vec3 {
           return kit::spring_force(xa, xb, va, vb, rest, family);
         });
 }

@@ -9,7 +9,7 @@ namespace {
 std::vector<kit::ParticleSpawn> draw(const kit::Emitter& emitter, std::uint8_t index,
                                      kit::remote::RandomBytes& state, long n) {
   if (n < 0 || n > 1'000'000) throw std::invalid_argument("sample_particles: n out of range [0, 1e6]");
-  kit::SpriteRandom random(0);
+  kit::Random random(0);
   std::memcpy(static_cast<void*>(&random), state.data(), sizeof random);
   std::vector<kit::ParticleSpawn> particles;
   particles.reserve(std::size_t(n));

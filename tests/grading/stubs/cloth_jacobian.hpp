@@ -7,8 +7,8 @@
 #include "remote/judge.hpp"
 
 namespace kit {
-inline Matrix3 spring_stiffness_block(const Vector3& xa, const Vector3& xb, double rest, double stiffness,
+inline Mat3 spring_stiffness_block(const Vec3& xa, const Vec3& xb, double rest, double stiffness,
                                       bool clamp) {
-  return remote::call<Matrix3>("spring_stiffness_block", xa, xb, rest, stiffness, clamp);
+  return remote::call<Mat3>("spring_stiffness_block", xa, xb, rest, stiffness, clamp);
 }
 }  // namespace kit

@@ -10,7 +10,7 @@
 
 namespace kit {
 inline PcgResult filtered_pcg(const SparseMatrix& A, const Eigen::VectorXd& b,
-                              const std::vector<Matrix3>& filters, double tolerance, int max_iterations) {
+                              const std::vector<Mat3>& filters, double tolerance, int max_iterations) {
   return remote::call<PcgResult>("filtered_pcg", A, b, filters, tolerance, max_iterations);
 }
 }  // namespace kit

@@ -7,7 +7,7 @@
 #include "remote/judge.hpp"
 
 namespace kit {
-inline Matrix32 deformation_gradient(const FemVector3& x0, const FemVector3& x1, const FemVector3& x2,
+inline Matrix32 deformation_gradient(const Vec3& x0, const Vec3& x1, const Vec3& x2,
                                      const Matrix2& rest_inverse) {
   return remote::call<Matrix32>("deformation_gradient", x0, x1, x2, rest_inverse);
 }

@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <vector>
 
+#include <kit/base/random.hpp>
 #include <kit/sprites/emitter.hpp>
 #include <kit/sprites/particles.hpp>
-#include <kit/sprites/sprite_random.hpp>
 #include <kit/sprites/sprite_scene.hpp>
 
 #include "remote/fields/sprites.hpp"
@@ -14,7 +14,7 @@
 
 namespace kit {
 /// The generator travels as its state and comes back advanced by the student's draws.
-inline ParticleSpawn sample_particle(const Emitter& emitter, std::uint8_t index, SpriteRandom& random) {
+inline ParticleSpawn sample_particle(const Emitter& emitter, std::uint8_t index, Random& random) {
   auto state = remote::bytes_of(random);
   const auto p = remote::call<ParticleSpawn>("sample_particle", emitter, index, remote::inout(state));
   remote::restore(random, state);
@@ -26,7 +26,7 @@ namespace kit::remote {
 /// n draws of sample_particle with one generator, run in the student's program: the same
 /// particles, in the same order, as n calls (a sample of 50 000 is one message, not 50 000).
 inline std::vector<ParticleSpawn> sample_particles(const Emitter& emitter, std::uint8_t index,
-                                                   SpriteRandom& random, long n) {
+                                                   Random& random, long n) {
   auto state = bytes_of(random);
   auto particles = call<std::vector<ParticleSpawn>>("sample_particles", emitter, index, inout(state), n);
   restore(random, state);

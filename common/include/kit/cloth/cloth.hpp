@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <kit/base/enum_names.hpp>
+#include <kit/base/vec3.hpp>
 
 namespace kit {
 
@@ -17,7 +18,7 @@ namespace kit {
 /// struct of arrays that Eigen also sees as an N×3 matrix). Row i is node i. Units follow use:
 /// positions [m], velocities [m/s], forces [N].
 using NodeArray = Eigen::Matrix<double, Eigen::Dynamic, 3>;
-using Vector3 = Eigen::Vector3d;
+using Vector3 = Vec3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
 
 /// The three spring families of the lecture (Provot 1995).
 enum class SpringKind : std::uint8_t {
@@ -59,15 +60,15 @@ struct SpringLayout {
 struct ClothGrid {
   int nx = 2, ny = 2;
   double width = 1, height = 1;  ///< [m]
-  Vector3 origin{0, 0, 0};       ///< node (0, 0) [m]
-  Vector3 u{1, 0, 0}, v{0, 0, 1};
+  Vec3 origin{0, 0, 0};       ///< node (0, 0) [m]
+  Vec3 u{1, 0, 0}, v{0, 0, 1};
   double areal_density = 0.1;    ///< [kg/m²]
 
   long nodes() const { return long(nx) * ny; }
   long index(int i, int j) const { return long(j) * nx + i; }
   double dx() const { return width / (nx - 1); }
   double dy() const { return height / (ny - 1); }
-  Vector3 rest_position(int i, int j) const { return origin + i * dx() * u + j * dy() * v; }
+  Vec3 rest_position(int i, int j) const { return origin + i * dx() * u + j * dy() * v; }
   /// The nodes at rest, row i = node i.
   NodeArray rest_positions() const;
   /// Node masses [kg]: the sheet's mass ρ·width·height shared by area, a node owning the part of

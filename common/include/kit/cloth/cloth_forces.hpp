@@ -32,7 +32,7 @@ struct ClothWork {
 /// and writes contiguous memory and vectorises; the regrouping keeps every spring.
 class ClothForces {
  public:
-  ClothForces(const Springs& springs, const Eigen::VectorXd& masses, std::optional<Vector3> gravity,
+  ClothForces(const Springs& springs, const Eigen::VectorXd& masses, std::optional<Vec3> gravity,
               std::optional<double> drag);
 
   /// f = the total force on every node [N], for positions x [m] and velocities v [m/s].
@@ -58,7 +58,7 @@ class ClothForces {
   long by_kind_[3] = {0, 0, 0};
   bool damped_ = false;
   Eigen::VectorXd masses_;
-  std::optional<Vector3> gravity_;
+  std::optional<Vec3> gravity_;
   std::optional<double> drag_;
   mutable std::vector<double> fx_, fy_, fz_;  ///< one run's spring forces, before they scatter
   mutable ClothWork* work_ = nullptr;

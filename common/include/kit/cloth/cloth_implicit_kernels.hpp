@@ -17,7 +17,7 @@
 
 namespace kit {
 
-using Matrix3 = Eigen::Matrix3d;
+using Matrix3 = Mat3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
 /// The 3n×3n matrices of the implicit step, stored by rows.
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
@@ -25,7 +25,7 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 /// stiffness K [N/m]. With x̂ the unit vector from b to a and l the length:
 ///   −K [x̂x̂ᵀ + (1 − L0/l)(I − x̂x̂ᵀ)],   (1 − L0/l) clamped to ≥ 0 when `clamp`.
 /// ∂f_a/∂x_b = ∂f_b/∂x_a = −∂f_a/∂x_a, ∂f_b/∂x_b = ∂f_a/∂x_a.
-using SpringStiffnessBlock = Matrix3 (*)(const Vector3& xa, const Vector3& xb, double rest, double stiffness,
+using SpringStiffnessBlock = Mat3 (*)(const Vec3& xa, const Vec3& xb, double rest, double stiffness,
                                          bool clamp);
 
 /// What ex 7.2 assembles A and b from: the state at the start of the step, its forces, and the
@@ -36,7 +36,7 @@ struct ImplicitSystemInput {
   const NodeArray& v;                        ///< velocities [m/s]
   const NodeArray& f;                        ///< total force on each node at (x, v) [N]
   const Eigen::VectorXd& masses;             ///< [kg]
-  const std::vector<Matrix3>& stiffness;     ///< ∂f_a/∂x_a per spring [N/m]
+  const std::vector<Mat3>& stiffness;     ///< ∂f_a/∂x_a per spring [N/m]
   std::optional<double> drag;                ///< linear air drag c [1/s]: f = −m c v, so ∂f/∂v = −m c I
   double h = 0;                              ///< the step [s]
 };
@@ -53,7 +53,7 @@ struct PcgResult {
 };
 /// Ex 7.3: solves S(A x − b) = 0 with x = S x, to ‖S(b − A x)‖ ≤ tolerance ‖S b‖, preconditioned
 /// by diag(A), in at most max_iterations products with A. `filters` holds one S per node.
-using FilteredPcg = PcgResult (*)(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Matrix3>& filters,
+using FilteredPcg = PcgResult (*)(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Mat3>& filters,
                                   double tolerance, int max_iterations);
 
 /// The student's three kernels, as the implicit step calls them.
@@ -64,8 +64,8 @@ struct ImplicitKernels {
 };
 
 /// Node i's 3-vector in an interleaved vector, and the reverse.
-inline Eigen::Map<const Vector3> node_of(const Eigen::VectorXd& flat, Eigen::Index i) {
-  return Eigen::Map<const Vector3>(flat.data() + 3 * i);
+inline Eigen::Map<const Vec3> node_of(const Eigen::VectorXd& flat, Eigen::Index i) {
+  return Eigen::Map<const Vec3>(flat.data() + 3 * i);
 }
 Eigen::VectorXd flatten(const NodeArray& a);
 void unflatten(const Eigen::VectorXd& flat, NodeArray& a);

@@ -14,11 +14,11 @@ namespace kit {
 
 /// The damping block of one spring, ∂f_a/∂v_a = −μ x̂x̂ᵀ [N·s/m] (damping along the spring only;
 /// zero for a spring of zero length, which has no direction).
-Matrix3 spring_damping_block(const Vector3& xa, const Vector3& xb, double damping);
+Mat3 spring_damping_block(const Vec3& xa, const Vec3& xb, double damping);
 
 /// ∂f/∂x · w for the springs whose stiffness blocks are given: spring s adds J_s (w_a − w_b) to
 /// node a and the opposite to node b. Result interleaved (3n).
-void stiffness_times(const Springs& springs, const std::vector<Matrix3>& stiffness, const NodeArray& w,
+void stiffness_times(const Springs& springs, const std::vector<Mat3>& stiffness, const NodeArray& w,
                      Eigen::VectorXd& out);
 
 class ImplicitMatrix {
@@ -29,7 +29,7 @@ class ImplicitMatrix {
 
   /// A for the state x with the given stiffness blocks (one per spring), masses [kg], drag [1/s]
   /// and step h [s], scattered into `matrix`'s values.
-  void assemble(const Springs& springs, const NodeArray& x, const std::vector<Matrix3>& stiffness,
+  void assemble(const Springs& springs, const NodeArray& x, const std::vector<Mat3>& stiffness,
                 const Eigen::VectorXd& masses, std::optional<double> drag, double h);
 
   /// Pins by elimination, for a solver without filters: a pinned node's rows and columns keep

@@ -119,13 +119,13 @@ class BackwardEulerStepper : public ImplicitStepper {
   ImplicitSettings settings_;
   ImplicitKernels kernels_;
   ImplicitMatrix matrix_;
-  std::vector<Matrix3> stiffness_;  ///< per spring, ∂f_a/∂x_a
-  std::vector<Matrix3> filters_;    ///< per node, S
+  std::vector<Mat3> stiffness_;  ///< per spring, ∂f_a/∂x_a
+  std::vector<Mat3> filters_;    ///< per node, S
   /// A node held on a collider in this step: its normal, the collider's friction, and the
   /// normal force [N] that pressed it in at the start of the step.
   struct Hold {
     std::int32_t node;
-    Vector3 normal;
+    Vec3 normal;
     double friction, pressure;
   };
   std::vector<Hold> holds_;

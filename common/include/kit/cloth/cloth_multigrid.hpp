@@ -96,7 +96,7 @@ class GridMultigrid {
 /// tolerance ‖S b‖, from x = 0. `multigrid` must have been set up with A. Counts its products
 /// with A (it applies as many V-cycles). negative_curvature also reports a search direction on
 /// which the cycle itself is not positive (rᵀ S B S r ≤ 0).
-PcgResult multigrid_pcg(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Matrix3>& filters,
+PcgResult multigrid_pcg(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Mat3>& filters,
                         GridMultigrid& multigrid, double tolerance, int max_iterations);
 
 }  // namespace kit

@@ -19,7 +19,7 @@ struct Pin {
 
 /// A fixed, frictional sphere the cloth cannot enter.
 struct SphereCollider {
-  Vector3 center{0, 0, 0};  ///< [m]
+  Vec3 center{0, 0, 0};  ///< [m]
   double radius = 1;        ///< [m], > 0
   double friction = 0;      ///< Coulomb coefficient μ ≥ 0 (tangential Δv ≤ μ × normal Δv)
 };
@@ -54,8 +54,8 @@ int stages(ClothIntegrator integrator);  ///< force evaluations per step
 
 /// Where the camera of the rendered frames looks from.
 struct ClothCamera {
-  Vector3 position{0, 1, 3};  ///< [m]
-  Vector3 target{0, 0.5, 0};  ///< [m]
+  Vec3 position{0, 1, 3};  ///< [m]
+  Vec3 target{0, 0.5, 0};  ///< [m]
   double fov_deg = 40;        ///< vertical field of view [deg], in (0, 180)
 };
 
@@ -64,7 +64,7 @@ struct ClothScene {
   std::string description;
   ClothGrid grid;
   SpringLayout springs;
-  std::optional<Vector3> gravity;  ///< [m/s²]; absent: no gravity force is computed
+  std::optional<Vec3> gravity;  ///< [m/s²]; absent: no gravity force is computed
   std::optional<double> drag;      ///< linear air drag [1/s]: f = −m·drag·v; absent: none
   std::vector<Pin> pins;
   std::vector<SphereCollider> spheres;

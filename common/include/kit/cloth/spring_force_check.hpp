@@ -6,7 +6,7 @@
 
 namespace kit {
 
-using SpringForce = Vector3 (*)(const Vector3& xa, const Vector3& xb, const Vector3& va, const Vector3& vb,
+using SpringForce = Vec3 (*)(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb,
                                 double rest, const SpringFamily& family);
 
 struct SpringForceCheck {

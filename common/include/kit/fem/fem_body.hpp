@@ -84,7 +84,7 @@ class FemBody {
   NodeArray x, v;                 ///< positions [m], velocities [m/s]
   NodeArray loads;                ///< external forces (gravity, tractions) [N], constant
   Eigen::VectorXd masses;         ///< lumped: each triangle gives ρ V / 3 to each corner [kg]
-  std::vector<Matrix3> filters;   ///< per node, the directions it may move in
+  std::vector<Mat3> filters;   ///< per node, the directions it may move in
 
  private:
   TriangleMesh mesh_;

@@ -18,11 +18,12 @@
 // derivative, and a library energy would let the forces come from differences of it.
 #include <Eigen/Core>
 
+#include <kit/base/vec3.hpp>
 #include <kit/fem/fem_material.hpp>
 
 namespace kit {
 
-using FemVector3 = Eigen::Vector3d;
+using FemVector3 = Vec3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
 using Matrix32 = Eigen::Matrix<double, 3, 2>;
 using Matrix2 = Eigen::Matrix2d;
 using ElementForces = Eigen::Matrix3d;  ///< column i: the force on node i [N]
@@ -40,7 +41,7 @@ RestTriangle rest_triangle(const Eigen::Vector2d& X0, const Eigen::Vector2d& X1,
                            double thickness);
 
 /// Ex 9.1: F = Ds Dm⁻¹ from the current nodes [m] and Dm⁻¹ [1/m].
-using DeformationGradient = Matrix32 (*)(const FemVector3& x0, const FemVector3& x1, const FemVector3& x2,
+using DeformationGradient = Matrix32 (*)(const Vec3& x0, const Vec3& x1, const Vec3& x2,
                                          const Matrix2& rest_inverse);
 /// Ex 9.1: Green's strain E = ½(FᵀF − I).
 using GreenStrain = Matrix2 (*)(const Matrix32& F);

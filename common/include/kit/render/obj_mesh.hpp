@@ -28,7 +28,7 @@ void write_cloth_obj(const std::filesystem::path& path, const ClothGrid& grid, c
 
 /// A triangle mesh as read from an OBJ file; indices are 0-based.
 struct ObjMesh {
-  std::vector<Vector3> positions, normals;
+  std::vector<Vec3> positions, normals;
   std::vector<std::array<int, 3>> faces;  ///< vertex indices; a vertex's normal has its index
 };
 

@@ -13,16 +13,15 @@
 
 #include <Eigen/Dense>
 
+#include <kit/base/vec3.hpp>
 #include <kit/cloth/cloth_renderer.hpp>  // the palette: cloth_sky, cloth_key_light, cloth_ambient
 #include <kit/render/image.hpp>
 #include <kit/render/sprite_camera.hpp>
 
 namespace kit {
 
-using Vector3 = Eigen::Vector3d;  ///< a point or direction in the world [m], y up (as in cloth.hpp)
-
-inline Vector3 to_vector3(const Vec3d& v) { return {v[0], v[1], v[2]}; }
-inline Vec3d to_vec3d(const Vector3& v) { return {v.x(), v.y(), v.z()}; }
+inline Vec3 to_vector3(const Vec3d& v) { return {v[0], v[1], v[2]}; }
+inline Vec3d to_vec3d(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 /// The colour a + (b − a) t: t = 0 gives a, t = 1 gives b.
 inline Vec3d mix_colours(const Vec3d& a, const Vec3d& b, double t) {
   return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
@@ -48,11 +47,11 @@ struct DepthCanvas {
 };
 
 /// The unit direction towards the key light (cloth_key_light, cloth_renderer.hpp).
-Vector3 key_light_direction();
+Vec3 key_light_direction();
 /// How lit a surface of unit normal n is, as a fraction of full light in [cloth_ambient, 1]: the
 /// ambient, plus Lambert (n·l clamped at 0) from the key light scaled by 1 − ambient, plus a dim
 /// fill light from the opposite side so that what the key light misses keeps its shape.
-double light_intensity(const Vector3& unit_normal);
+double light_intensity(const Vec3& unit_normal);
 
 /// What a ray meets: the colour it brings back and the depth there [m along the view axis;
 /// +infinity for the sky].
@@ -65,12 +64,12 @@ struct RayHit {
 inline constexpr double ground_checker_square = 0.25;
 /// Whether the key light is blocked on its way to a ground point [m] (a shadow there); an empty
 /// test casts no shadow.
-using ShadowTest = std::function<bool(const Vector3& ground_point)>;
+using ShadowTest = std::function<bool(const Vec3& ground_point)>;
 
 /// What may stand in front of the backdrop along a ray (from the camera's eye, view-axis
 /// component 1, as SpriteCamera::ray): given the ray and what the backdrop shows along it, it
 /// replaces that with anything nearer (the cloth's spheres). Empty: nothing.
-using RayForeground = std::function<void(const Vector3& ray, RayHit& hit)>;
+using RayForeground = std::function<void(const Vec3& ray, RayHit& hit)>;
 
 /// Fills every pixel of `canvas` and its depth with what the ray through the pixel's centre sees:
 /// the sky (cloth_sky), or, when `ground_height` [m] is given, the plane y = height as a
@@ -91,7 +90,7 @@ inline constexpr double max_pixel_coordinate = 1e6;
 
 /// Where `point` [m] lands on the image, or nullopt when it cannot be drawn: not finite, nearer
 /// than SpriteCamera::near_depth (or behind the eye), or beyond max_pixel_coordinate.
-std::optional<ScreenVertex> screen_vertex(const SpriteCamera& camera, const Vector3& point);
+std::optional<ScreenVertex> screen_vertex(const SpriteCamera& camera, const Vec3& point);
 
 /// Fills the triangle (a, b, c), either winding, clipped to the canvas: each pixel whose centre
 /// lies inside and whose depth (1/depth interpolated linearly on screen, as perspective makes it)

@@ -14,10 +14,10 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
+#include <kit/base/vec3.hpp>
+
 namespace kit {
 
-using Vec3 = Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;
 
 /// A solid box of the body, in the body frame: its centre [m] and its full side lengths [m].

@@ -4,7 +4,7 @@
 // (solutions/sprite_emit.hpp), which uses these.
 #include <cstdint>
 
-#include <kit/sprites/sprite_random.hpp>
+#include <kit/base/random.hpp>
 #include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
@@ -12,18 +12,18 @@ namespace kit {
 /// Particles to emit this frame: N = mean + rand·variance (Reeves eq. 1), never negative. A
 /// fractional N emits ⌊N⌋ and one more with probability N − ⌊N⌋, so the mean number per frame
 /// is exactly E[max(N, 0)] even for rates below one particle per frame (fireworks shells).
-long emission_count(const Spread& rate, SpriteRandom& random);
+long emission_count(const Spread& rate, Random& random);
 
 /// mean + rand·variance, the draw of one scalar attribute.
-inline double draw(const Spread& s, SpriteRandom& random) { return s.mean + random.symmetric() * s.variance; }
+inline double draw(const Spread& s, Random& random) { return s.mean + random.symmetric() * s.variance; }
 
 /// A unit vector uniform over the cap of half-angle `angle_deg` around the unit vector `axis`
 /// (180° is the whole sphere): cos θ uniform in [cos angle, 1], φ uniform in [0, 2π).
-Vec3d direction_in_cap(const Vec3d& axis, double angle_deg, SpriteRandom& random);
+Vec3d direction_in_cap(const Vec3d& axis, double angle_deg, Random& random);
 
 /// A point uniform on the disc of `radius` [m] centred at the origin, normal to the unit `axis`:
 /// r = R·√rand, so that equal areas are equally likely.
-Vec3d offset_in_disc(const Vec3d& axis, double radius, SpriteRandom& random);
+Vec3d offset_in_disc(const Vec3d& axis, double radius, Random& random);
 
 /// A point uniform in the ball of `radius` [m] centred at the origin, with its unit direction
 /// from the centre (r = R·∛rand along a uniform direction). For the sphere shape, the direction
@@ -32,6 +32,6 @@ struct BallPoint {
   Vec3d offset;     ///< [m]
   Vec3d direction;  ///< unit
 };
-BallPoint point_in_ball(double radius, SpriteRandom& random);
+BallPoint point_in_ball(double radius, Random& random);
 
 }  // namespace kit

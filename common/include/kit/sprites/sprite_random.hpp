@@ -1,23 +1,10 @@
 #pragma once
-// The random numbers of a sprite scene. std::mt19937_64's output sequence is fixed by the C++
-// standard, and the conversion to reals below is the kit's own, so one --seed gives the same
-// particles, frames and data on every compiler and machine (std::uniform_real_distribution is
-// implementation-defined, which is why it is not used).
-#include <cstdint>
-#include <random>
+// The random numbers of a sprite scene: the kit's one source (base/random.hpp). SpriteRandom is
+// its name before the library took its layers, kept one release for exercise copies that use it.
+#include <kit/base/random.hpp>
 
 namespace kit {
 
-class SpriteRandom {
- public:
-  explicit SpriteRandom(std::uint64_t seed) : engine_(seed) {}
-  /// Uniform in [0, 1), 53 random bits.
-  double unit() { return double(engine_() >> 11) * 0x1.0p-53; }
-  /// Reeves's rand: uniform in [−1, 1).
-  double symmetric() { return 2.0 * unit() - 1.0; }
-
- private:
-  std::mt19937_64 engine_;
-};
+using SpriteRandom = Random;
 
 }  // namespace kit

@@ -8,16 +8,16 @@
 #include <cstdint>
 #include <vector>
 
+#include <kit/base/random.hpp>
 #include <kit/sprites/particle_update.hpp>
 #include <kit/sprites/particles.hpp>
-#include <kit/sprites/sprite_random.hpp>
 #include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
 
 /// The two steps a student writes (ex 5.1 and 5.2), plugged into the system by the chapter
 /// (chapters/05-sprites/sprite_kernels.hpp): common/ never includes solutions/.
-using SampleParticle = ParticleSpawn (*)(const Emitter& emitter, std::uint8_t index, SpriteRandom& random);
+using SampleParticle = ParticleSpawn (*)(const Emitter& emitter, std::uint8_t index, Random& random);
 using AgeAndKill = long (*)(Particles& particles, float dt, const DeathRules& rules,
                             const std::vector<bool>& bursts_on_death, std::vector<Death>& deaths);
 struct SpriteKernels {
@@ -60,7 +60,7 @@ class SpriteSystem {
   const SpriteScene& scene_;
   SpriteKernels kernels_;
   double dt_;
-  SpriteRandom random_;
+  Random random_;
   ParticleUpdate update_;
   Particles particles_;
   std::vector<Death> deaths_;  // reused every frame

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <tuple>
 
+#include <kit/base/random.hpp>
 #include <kit/sprites/particles.hpp>
-#include <kit/sprites/sprite_random.hpp>
 #include <kit/sprites/sprite_scene.hpp>
 
 #include "../wire.hpp"
@@ -64,14 +64,14 @@ struct Codec<Particles> {
 
 /// The generator's state, as bytes (it is private). What comes back from a student's program is
 /// checked before the judge draws from it: the engine's position must lie in its state.
-using RandomBytes = std::array<unsigned char, sizeof(SpriteRandom)>;
-inline RandomBytes bytes_of(const SpriteRandom& random) {
+using RandomBytes = std::array<unsigned char, sizeof(Random)>;
+inline RandomBytes bytes_of(const Random& random) {
   RandomBytes bytes;
   std::memcpy(bytes.data(), &random, sizeof random);
   return bytes;
 }
-inline void restore(SpriteRandom& random, const RandomBytes& bytes) {
-  static_assert(sizeof(SpriteRandom) == sizeof(std::mt19937_64));
+inline void restore(Random& random, const RandomBytes& bytes) {
+  static_assert(sizeof(Random) == sizeof(std::mt19937_64));
   std::mt19937_64 engine;
   std::memcpy(static_cast<void*>(&engine), bytes.data(), sizeof engine);
   std::ostringstream text;
