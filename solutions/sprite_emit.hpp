@@ -24,7 +24,7 @@ namespace kit {
 inline ParticleSpawn sample_particle(const Emitter& emitter, std::uint8_t index, Random& random) {
   ParticleSpawn p;
   // BEGIN SOLUTION ex 5.1: place and aim by the shape, then draw speed, lifetime, size, colour and alpha as mean + rand·variance
-  Vec3d offset{0, 0, 0}, direction = emitter.axis;
+  Vec3 offset{0, 0, 0}, direction = emitter.axis;
   switch (emitter.shape) {
     case EmitterShape::point: direction = direction_in_cap(emitter.axis, 180.0, random); break;
     case EmitterShape::disc:

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 void falls_under_gravity(kit::ChapterApp& app, const kit::SpriteScene& scene,
                          const kit::SpriteRunOptions& run) {
   const kit::DragProblem mean = kit::mean_particle(scene);
-  const kit::SpriteCamera camera(scene.camera, run.width, run.height);
+  const kit::Pinhole camera(scene.camera, run.width, run.height);
   app.report().say("trade", "1. The mean particle of '{scene}' over its life of {t:.3g} s (k = {k} 1/s), "
                    "against the closed form x(t) of gravity plus drag:\n",
                    {{"scene", scene.name}, {"t", mean.t_end}, {"k", mean.drag}});

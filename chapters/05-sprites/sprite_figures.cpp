@@ -21,13 +21,13 @@ std::string style(Integrator i) {
 }
 }  // namespace
 
-double pixels_between(const SpriteCamera& camera, const Vec3d& a, const Vec3d& b) {
+double pixels_between(const Pinhole& camera, const Vec3& a, const Vec3& b) {
   const auto pa = camera.project(a[0], a[1], a[2]), pb = camera.project(b[0], b[1], b[2]);
   if (!pa || !pb) return std::numeric_limits<double>::quiet_NaN();
   return std::hypot(pa->px - pb->px, pa->py - pb->py);
 }
 
-Figure trade_figure(const TradeCurves& curves, const SpriteCamera& camera, double fps, const std::string& scene) {
+Figure trade_figure(const TradeCurves& curves, const Pinhole& camera, double fps, const std::string& scene) {
   Figure fig("trade", fmt::format("Speed against accuracy: the mean particle of '{}' at the end of its life", scene));
   fig.height_in = 6.5;
   auto& metres = fig.panel("steps per second of animation, 1/Δt [1/s] (the cost: all four cost the same per step)",

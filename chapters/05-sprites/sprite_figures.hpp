@@ -6,7 +6,7 @@
 #include <vector>
 
 #include <kit/app/figure.hpp>
-#include <kit/render/sprite_camera.hpp>
+#include <kit/render/camera.hpp>
 #include <kit/sprites/sprite_run.hpp>
 
 #include "sprite_trade.hpp"
@@ -15,12 +15,12 @@ namespace kit {
 
 /// Distance on screen [px] between the projections of a and b [m]; NaN when either is behind
 /// the camera.
-double pixels_between(const SpriteCamera& camera, const Vec3d& a, const Vec3d& b);
+double pixels_between(const Pinhole& camera, const Vec3& a, const Vec3& b);
 
 using TradeCurves = std::map<Integrator, std::vector<TradeRun>>;
 /// Error at the end of the mean particle's life against steps per second of animation (1/Δt):
 /// top in metres, bottom in pixels at `camera`, with the frame rate `fps` and one pixel marked.
-Figure trade_figure(const TradeCurves& curves, const SpriteCamera& camera, double fps, const std::string& scene);
+Figure trade_figure(const TradeCurves& curves, const Pinhole& camera, double fps, const std::string& scene);
 
 /// Emitted and dead (cumulative) and alive per frame; alive = emitted − dead.
 Figure counts_figure(const SpriteRecording& recording, double fps, const std::string& scene);

@@ -7,8 +7,8 @@
 
 namespace kit {
 
-Vec3d DragProblem::exact_position(double t) const {
-  Vec3d x;
+Vec3 DragProblem::exact_position(double t) const {
+  Vec3 x;
   for (int i = 0; i < 3; ++i) x[i] = drag_motion({x0[i], v0[i]}, gravity[i], drag, wind[i], t).x;
   return x;
 }

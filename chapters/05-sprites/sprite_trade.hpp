@@ -14,15 +14,15 @@ namespace kit {
 
 /// One particle's motion: start, forces, horizon.
 struct DragProblem {
-  Vec3d x0{0, 0, 0};       ///< [m]
-  Vec3d v0{0, 0, 0};       ///< [m/s]
-  Vec3d gravity{0, 0, 0};  ///< [m/s²]
+  Vec3 x0{0, 0, 0};       ///< [m]
+  Vec3 v0{0, 0, 0};       ///< [m/s]
+  Vec3 gravity{0, 0, 0};  ///< [m/s²]
   double drag = 0;         ///< k [1/s]
-  Vec3d wind{0, 0, 0};     ///< [m/s]
+  Vec3 wind{0, 0, 0};     ///< [m/s]
   double t_end = 1;        ///< [s]
 
   /// The exact position at time t [s].
-  Vec3d exact_position(double t) const;
+  Vec3 exact_position(double t) const;
 };
 /// The longest horizon of the trade [s]: 60 s take 460,000 steps at its smallest Δt.
 inline constexpr double max_trade_horizon = 60.0;
@@ -36,8 +36,8 @@ struct TradeRun {
   double dt = 0;             ///< [s]
   long steps = 0;            ///< per particle over the horizon
   double error = 0;          ///< [m]
-  Vec3d position{0, 0, 0};   ///< x_n [m]
-  Vec3d exact{0, 0, 0};      ///< x(n·Δt) [m]
+  Vec3 position{0, 0, 0};   ///< x_n [m]
+  Vec3 exact{0, 0, 0};      ///< x(n·Δt) [m]
 };
 /// `integrator` on `problem` at each of `dts`.
 std::vector<TradeRun> trade_runs(const DragProblem& problem, Integrator integrator, const std::vector<double>& dts);

@@ -40,7 +40,7 @@ struct RigidOutput {
 /// ffmpeg is installed) and the player (finish_animation, frame_writer.hpp). Stale frames and
 /// <stem>_*.obj meshes of an earlier, longer run in those folders are removed first. With an empty
 /// options.dir nothing is written. Throws std::invalid_argument for a size or fps that is not
-/// positive, as SpriteCamera for a bad camera, std::runtime_error when a file cannot be written.
+/// positive, as Pinhole for a bad camera, std::runtime_error when a file cannot be written.
 RigidOutput write_rigid_output(const RigidShape& shape, const std::vector<RigidState>& frames, const Camera& camera,
                                const RigidOutputOptions& options);
 

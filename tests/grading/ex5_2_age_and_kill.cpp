@@ -78,7 +78,7 @@ TEST_CASE("ex 5.2: the opacity threshold and the region kill only when the scene
   rules.alpha_below = 0.1;
   CHECK(kit::age_and_kill(ps, 0.1f, rules, no_bursts, deaths) == 1);
   CHECK(ids(ps) == std::set<std::uint32_t>{0, 2, 3});
-  rules.region = std::array<kit::Vec3d, 2>{kit::Vec3d{-10, 0, -10}, kit::Vec3d{10, 10, 10}};
+  rules.region = std::array<kit::Vec3, 2>{kit::Vec3{-10, 0, -10}, kit::Vec3{10, 10, 10}};
   CHECK(kit::age_and_kill(ps, 0.1f, rules, no_bursts, deaths) == 1);
   CHECK(ids(ps) == std::set<std::uint32_t>{0, 3});
   ps.x[0] = 10.5f;  // out through the +x face
@@ -119,7 +119,7 @@ TEST_CASE("ex 5.2: on the boundaries: age = lifetime dies; alpha = threshold and
   ps.y[2] = 0.f, ps.x[3] = 10.f;  // on the floor and on the +x face
   kit::DeathRules rules;
   rules.alpha_below = 0.25;
-  rules.region = std::array<kit::Vec3d, 2>{kit::Vec3d{-10, 0, -10}, kit::Vec3d{10, 10, 10}};
+  rules.region = std::array<kit::Vec3, 2>{kit::Vec3{-10, 0, -10}, kit::Vec3{10, 10, 10}};
   CHECK(kit::age_and_kill(ps, 0.25f, rules, no_bursts, deaths) == 1);
   CHECK(ids(ps) == std::set<std::uint32_t>{1, 2, 3});
 }

@@ -20,6 +20,7 @@
 
 #include <kit/base/enum_names.hpp>
 #include <kit/base/real_range.hpp>
+#include <kit/base/vec3.hpp>
 
 namespace kit::scene_toml {
 
@@ -33,6 +34,8 @@ inline RealRange symmetric(double bound) { return between(-bound, bound); }
 std::string_view kind(const toml::node& n);
 /// The value as the scene file would write it, on one line, cut short when long.
 std::string show(const toml::node& n);
+/// Three numbers a scene file gave (Section::vec3) as a point or direction.
+inline Vec3 to_vec3(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 /// "a, b, c".
 std::string join(std::initializer_list<std::string_view> words);
 std::string join(const std::vector<std::string>& words);

@@ -12,7 +12,7 @@ namespace kit {
 namespace {
 
 // Sphere colliders: a neutral blue-grey with a small highlight, so the sheet's colours stand out.
-constexpr Vec3d sphere_colour{0.72, 0.74, 0.78};
+constexpr Colour sphere_colour{0.72, 0.74, 0.78};
 
 // The nearest t ≥ t_min with |origin + t·ray − centre| = radius, or nullopt.
 std::optional<double> hit_sphere(const Vec3& origin, const Vec3& ray, const SphereCollider& sphere,
@@ -29,8 +29,8 @@ std::optional<double> hit_sphere(const Vec3& origin, const Vec3& ray, const Sphe
 }
 
 // The background, ground and spheres, per pixel by ray casting (the spheres shadow the ground).
-void draw_surroundings(const SpriteCamera& camera, const ClothScene& scene, DepthCanvas& canvas) {
-  const Vec3 eye = to_vector3(camera.eye()), light = key_light_direction();
+void draw_surroundings(const Pinhole& camera, const ClothScene& scene, DepthCanvas& canvas) {
+  const Vec3 eye = camera.eye(), light = key_light_direction();
   std::optional<double> ground_height;
   if (scene.ground) ground_height = scene.ground->height;
   ShadowTest in_shadow;  // empty without spheres: no per-pixel call for nothing
@@ -42,13 +42,13 @@ void draw_surroundings(const SpriteCamera& camera, const ClothScene& scene, Dept
     };
     spheres = [&](const Vec3& ray, RayHit& hit) {
       for (const SphereCollider& sphere : scene.spheres) {
-        const auto t = hit_sphere(eye, ray, sphere, SpriteCamera::near_depth);
+        const auto t = hit_sphere(eye, ray, sphere, Pinhole::near_depth);
         if (!t || *t >= hit.depth) continue;
         hit.depth = *t;
         const Vec3 n = (eye + *t * ray - sphere.center) / sphere.radius;
         const Vec3 half_way = (light - ray.normalized()).normalized();
         const double highlight = 0.2 * std::pow(std::max(0.0, n.dot(half_way)), 40);
-        const Vec3d colour = scale_colour(sphere_colour, light_intensity(n));
+        const Colour colour = scale_colour(sphere_colour, light_intensity(n));
         hit.colour = {colour[0] + highlight, colour[1] + highlight, colour[2] + highlight};
       }
     };
@@ -60,8 +60,7 @@ void draw_surroundings(const SpriteCamera& camera, const ClothScene& scene, Dept
 
 Image render_cloth(const ClothGrid& grid, const NodeArray& x, const ClothScene& scene, int width, int height,
                    ClothRenderStats* stats) {
-  const Camera view{to_vec3d(scene.camera.position), to_vec3d(scene.camera.target), scene.camera.fov_deg};
-  const SpriteCamera camera(view, width, height);
+  const Pinhole camera(scene.camera, width, height);
   const NodeArray normals = vertex_normals(grid, x);  // also checks that x fits the grid
   DepthCanvas canvas(width, height, cloth_sky_top);
   draw_surroundings(camera, scene, canvas);
@@ -69,14 +68,14 @@ Image render_cloth(const ClothGrid& grid, const NodeArray& x, const ClothScene& 
   // Every node projected once; a node behind the near plane or not finite has no screen vertex.
   std::vector<std::optional<ScreenVertex>> screen(std::size_t(x.rows()));
   for (long k = 0; k < x.rows(); ++k) screen[std::size_t(k)] = screen_vertex(camera, x.row(k).transpose());
-  const Vec3 eye = to_vector3(camera.eye());
+  const Vec3 eye = camera.eye();
   ClothRenderStats counted;
   auto draw_triangle = [&](long a, long b, long c) {
     const auto &sa = screen[std::size_t(a)], &sb = screen[std::size_t(b)], &sc = screen[std::size_t(c)];
     // Which side faces the eye decides the tint; the shading normal is turned towards the eye.
     const Vec3 pa = x.row(a), pb = x.row(b), pc = x.row(c);
     const bool front = (pb - pa).cross(pc - pa).dot(eye - pa) >= 0;
-    const Vec3d& tint = front ? cloth_front_colour : cloth_back_colour;
+    const Colour& tint = front ? cloth_front_colour : cloth_back_colour;
     const double side = front ? 1 : -1;
     const Vec3 na = normals.row(a), nb = normals.row(b), nc = normals.row(c);
     // The normal interpolated perspective-correctly, renormalised.

@@ -20,6 +20,7 @@ using scene_toml::kind;
 using scene_toml::Reader;
 using scene_toml::Section;
 using scene_toml::symmetric;
+using scene_toml::to_vec3;
 
 // Bounds beyond which a value is a typo, not a scene (metres, seconds, kilograms).
 constexpr double max_coordinate = 1e6;   // [m]
@@ -32,13 +33,11 @@ constexpr double max_acceleration = 1000;  // [m/s²]
 // Below this |v − (v·u)u|/|v|, v is too close to u for the grid to span an area.
 constexpr double parallel_tolerance = 1e-6;
 
-Vec3 to_vector(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
-
 /// A direction: three numbers, not all zero.
 Vec3 direction(const Section& s, std::string_view k, const Vec3& fallback) {
   const auto a = s.vec3(k, symmetric(max_coordinate));
   if (!a) return fallback;
-  const Vec3 d = to_vector(*a);
+  const Vec3 d = to_vec3(*a);
   if (!(d.norm() > 0)) s.reader().bad(*s.find(k), s.key(k), "must not be zero: it is a direction");
   return d;
 }
@@ -69,7 +68,7 @@ void read_grid(const Section& s, ClothGrid& grid) {
   grid.ny = int((*nodes)[1]);
   grid.width = (*size)[0];
   grid.height = (*size)[1];
-  if (const auto origin = s.vec3("origin", symmetric(max_coordinate))) grid.origin = to_vector(*origin);
+  if (const auto origin = s.vec3("origin", symmetric(max_coordinate))) grid.origin = to_vec3(*origin);
 
   // u and v as given may be any lengths and need not be orthogonal: the grid's rest shape is
   // rectangular, so v keeps only its part orthogonal to u (Gram–Schmidt).
@@ -137,7 +136,7 @@ SphereCollider read_sphere(const Section& s) {
   SphereCollider sphere;
   const auto center = s.vec3("center", symmetric(max_coordinate));
   if (!center) s.missing("center", "a sphere needs its center [x, y, z] [m]");
-  sphere.center = to_vector(*center);
+  sphere.center = to_vec3(*center);
   const auto radius = s.real("radius", positive(max_coordinate));
   if (!radius) s.missing("radius", "a sphere needs its radius [m] > 0");
   sphere.radius = *radius;
@@ -153,10 +152,10 @@ void read_spheres(const Reader& r, const toml::node& n, std::vector<SphereCollid
     spheres.push_back(read_sphere(Section(r, *list->get(i)->as_table(), fmt::format("sphere[{}]", i))));
 }
 
-void read_camera(const Section& s, ClothCamera& camera) {
+void read_camera(const Section& s, Camera& camera) {
   s.only({"position", "target", "fov_deg"});
-  if (const auto p = s.vec3("position", symmetric(max_coordinate))) camera.position = to_vector(*p);
-  if (const auto t = s.vec3("target", symmetric(max_coordinate))) camera.target = to_vector(*t);
+  if (const auto p = s.vec3("position", symmetric(max_coordinate))) camera.position = to_vec3(*p);
+  if (const auto t = s.vec3("target", symmetric(max_coordinate))) camera.target = to_vec3(*t);
   camera.fov_deg = s.real("fov_deg", RealRange{0, 180, true, true}).value_or(camera.fov_deg);
   if (camera.position == camera.target) {
     const std::string what = "must differ from camera.position: the camera looks from position to target";
@@ -199,7 +198,7 @@ ClothScene parse_cloth_scene(std::string_view text, std::string_view file_name) 
 
   if (const auto forces = root.sub("forces")) {
     forces->only({"gravity", "drag"});
-    if (const auto g = forces->vec3("gravity", symmetric(max_acceleration))) scene.gravity = to_vector(*g);
+    if (const auto g = forces->vec3("gravity", symmetric(max_acceleration))) scene.gravity = to_vec3(*g);
     scene.drag = forces->real("drag", between(0, 1000));
   }
   if (const auto* spheres = root.find("sphere")) read_spheres(r, *spheres, scene.spheres);

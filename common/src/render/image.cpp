@@ -13,13 +13,13 @@
 
 namespace kit {
 
-Image::Image(int w, int h, Vec3d colour) : width(w), height(h) {
+Image::Image(int w, int h, Colour colour) : width(w), height(h) {
   if (w < 1 || h < 1) throw std::invalid_argument(fmt::format("an image needs at least 1 x 1 pixels, not {} x {}", w, h));
   rgb.resize(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
   fill(colour);
 }
 
-void Image::fill(Vec3d colour) {
+void Image::fill(Colour colour) {
   const float r = static_cast<float>(colour[0]), g = static_cast<float>(colour[1]), b = static_cast<float>(colour[2]);
   for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) rgb[i] = r, rgb[i + 1] = g, rgb[i + 2] = b;
 }

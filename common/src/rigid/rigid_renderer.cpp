@@ -19,7 +19,7 @@ namespace kit {
 namespace {
 
 // Saturated enough to tell the parts apart under any light, and none close to the ground's greys.
-constexpr std::array<Vec3d, 4> part_colours{{{0.90, 0.52, 0.24}, {0.30, 0.52, 0.86}, {0.36, 0.70, 0.40},
+constexpr std::array<Colour, 4> part_colours{{{0.90, 0.52, 0.24}, {0.30, 0.52, 0.86}, {0.36, 0.70, 0.40},
                                              {0.62, 0.62, 0.66}}};
 constexpr double camera_fov_deg = 40;             // vertical [deg]
 constexpr double camera_azimuth_deg = 25;         // to the right of +z, seen from above [deg]
@@ -95,17 +95,17 @@ class BodyShadow {
 
 }  // namespace
 
-Vec3d rigid_part_colour(std::size_t part) { return part_colours[part % part_colours.size()]; }
+Colour rigid_part_colour(std::size_t part) { return part_colours[part % part_colours.size()]; }
 
 Image render_rigid(const RigidShape& shape, const RigidState& state, const Camera& view, int width, int height) {
-  const SpriteCamera camera(view, width, height);
+  const Pinhole camera(view, width, height);
   DepthCanvas canvas(width, height, cloth_sky_top);
   const BodyShadow shadow(shape, state);
   ShadowTest in_shadow;
   if (shadow.casts()) in_shadow = [&shadow](const Vec3& p) { return shadow(p); };
   draw_backdrop(camera, 0.0, in_shadow, {}, canvas);  // the ground y = 0
 
-  const Vec3 eye = to_vector3(camera.eye());
+  const Vec3 eye = camera.eye();
   for (const RigidFace& face : rigid_faces(shape, state)) {
     // A closed box hides the faces turned away from the eye behind the others: skipping them
     // halves the work. (False for a non-finite face too, which is not drawn.)
@@ -114,7 +114,7 @@ Image render_rigid(const RigidShape& shape, const RigidState& state, const Camer
     for (std::size_t k = 0; k < 4; ++k) screen[k] = screen_vertex(camera, face.corners[k]);
     if (!std::all_of(screen.begin(), screen.end(), [](const auto& vertex) { return vertex.has_value(); }))
       continue;
-    const Vec3d colour = scale_colour(rigid_part_colour(face.part), light_intensity(face.normal));
+    const Colour colour = scale_colour(rigid_part_colour(face.part), light_intensity(face.normal));
     const auto flat = [&colour](double, double, double) { return colour; };
     fill_triangle(*screen[0], *screen[1], *screen[2], canvas, flat);
     fill_triangle(*screen[0], *screen[2], *screen[3], canvas, flat);

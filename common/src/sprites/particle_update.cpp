@@ -43,7 +43,7 @@ ParticleUpdate::ParticleUpdate(const SpriteScene& scene, Integrator integrator) 
   for (const Emitter& e : scene.emitters) {
     rates_.push_back({float(e.colour_rate[0]), float(e.colour_rate[1]), float(e.colour_rate[2]),
                       float(e.alpha_rate), float(e.size_rate)});
-    has_colour_rate_ |= e.colour_rate != Vec3d{0, 0, 0};
+    has_colour_rate_ |= e.colour_rate != Colour{0, 0, 0};
     has_alpha_rate_ |= e.alpha_rate != 0;
     has_size_rate_ |= e.size_rate != 0;
     bursts_on_death_.push_back(e.on_death.has_value());

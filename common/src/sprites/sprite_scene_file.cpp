@@ -26,6 +26,7 @@ using scene_toml::no_limit;
 using scene_toml::Reader;
 using scene_toml::Section;
 using scene_toml::symmetric;
+using scene_toml::to_vec3;
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
@@ -62,7 +63,7 @@ std::optional<Spread> spread(const Section& s, std::string_view k, const RealRan
   return result;
 }
 
-std::optional<Vec3d> colour(const Section& s, std::string_view k) {
+std::optional<Colour> colour(const Section& s, std::string_view k) {
   return s.vec3(k, between(0, 1), "r, g, b");
 }
 
@@ -78,16 +79,16 @@ struct EmitterSource {
 
 void read_camera(const Section& s, Camera& camera) {
   s.only({"position", "target", "fov_deg"});
-  camera.position = s.vec3("position", symmetric(max_coordinate)).value_or(camera.position);
-  camera.target = s.vec3("target", symmetric(max_coordinate)).value_or(camera.target);
+  if (const auto p = s.vec3("position", symmetric(max_coordinate))) camera.position = to_vec3(*p);
+  if (const auto t = s.vec3("target", symmetric(max_coordinate))) camera.target = to_vec3(*t);
   camera.fov_deg = s.real("fov_deg", between(1, 170)).value_or(camera.fov_deg);
 }
 
 void read_forces(const Reader& r, const Section& s, SpriteForces& forces) {
   s.only({"gravity", "drag", "wind"});
-  forces.gravity = s.vec3("gravity", symmetric(max_rate_of_change));
+  if (const auto g = s.vec3("gravity", symmetric(max_rate_of_change))) forces.gravity = to_vec3(*g);
   forces.drag = s.real("drag", between(1e-9, 1000));  // k below 1e-9 1/s: no drag a scene could see
-  forces.wind = s.vec3("wind", symmetric(max_rate_of_change));
+  if (const auto w = s.vec3("wind", symmetric(max_rate_of_change))) forces.wind = to_vec3(*w);
   if (forces.wind && !forces.drag)
     r.bad(*s.find("wind"), s.key("wind"),
           "wind acts through drag (a = -k (v - wind)), so it needs forces.drag > 0 [1/s]");
@@ -107,7 +108,7 @@ void read_death(const Reader& r, const Section& s, DeathRules& death) {
         r.bad(*s.find("region"), s.key("region"),
               fmt::format("min must be < max in every component, but {} min = {} >= max = {}", "xyz"[i], (*lo)[i],
                           (*hi)[i]));
-    death.region = std::array<Vec3d, 2>{*lo, *hi};
+    death.region = std::array<Vec3, 2>{to_vec3(*lo), to_vec3(*hi)};
   }
 }
 
@@ -129,7 +130,7 @@ Emitter read_emitter(const Reader& r, const Section& s, EmitterSource& source) {
   e.name = *name;
 
   e.shape = s.choice("shape", emitter_shape_names).value_or(e.shape);
-  e.position = s.vec3("position", symmetric(max_coordinate)).value_or(e.position);
+  if (const auto p = s.vec3("position", symmetric(max_coordinate))) e.position = to_vec3(*p);
   if (const auto axis = s.vec3("axis", symmetric(max_coordinate))) {
     const double norm = std::hypot((*axis)[0], (*axis)[1], (*axis)[2]);
     if (!(norm > 0)) r.bad(*s.find("axis"), s.key("axis"), "must not be zero: it is a direction");

@@ -57,7 +57,7 @@ kit::ClothScene facing_scene(kit::ClothGrid& grid) {
   return scene;
 }
 
-bool near_colour(const float* pixel, const kit::Vec3d& colour, double tolerance) {
+bool near_colour(const float* pixel, const kit::Colour& colour, double tolerance) {
   return std::abs(pixel[0] - colour[0]) <= tolerance && std::abs(pixel[1] - colour[1]) <= tolerance &&
          std::abs(pixel[2] - colour[2]) <= tolerance;
 }
@@ -164,7 +164,7 @@ TEST_CASE("a sheet facing the camera fills the centre with its front colour; the
                              kit::cloth_front_colour[2] * factor}, 1e-5));
   // The top-left pixel's ray: camera looking along −z, focal length 60/tan 20° pixels.
   const double focal = 60 / std::tan(20 * M_PI / 180), a = (0.5 - 80) / focal, b = (60 - 0.5) / focal;
-  const kit::Vec3d sky = kit::cloth_sky(b / std::sqrt(a * a + b * b + 1));
+  const kit::Colour sky = kit::cloth_sky(b / std::sqrt(a * a + b * b + 1));
   CHECK(near_colour(image.pixel(0, 0), sky, 1e-6));
   CHECK(!near_colour(image.pixel(0, 0), kit::cloth_sky_bottom, 0.05));  // above the horizon: bluer
   // Seen from behind, the same sheet shows its back colour.

@@ -13,7 +13,7 @@
 #include <kit/render/animation.hpp>
 #include <kit/render/image.hpp>
 #include <kit/render/obj_mesh.hpp>
-#include <kit/render/sprite_camera.hpp>
+#include <kit/render/camera.hpp>
 #include <kit/rigid/rigid_body.hpp>
 #include <kit/rigid/rigid_renderer.hpp>
 
@@ -45,7 +45,7 @@ std::vector<Vec3> world_corners(const kit::BoxPart& part, const kit::RigidState&
 }
 
 // Whether a pixel is `colour` lit by some factor in [ambient, 1], as a flat-shaded face is.
-bool body_coloured(const float* pixel, const kit::Vec3d& colour) {
+bool body_coloured(const float* pixel, const kit::Colour& colour) {
   const Vec3 p(pixel[0], pixel[1], pixel[2]), c(colour[0], colour[1], colour[2]);
   const double factor = p.dot(c) / c.squaredNorm();
   return factor >= kit::cloth_ambient - 1e-6 && factor <= 1 + 1e-6 && (p - factor * c).norm() < 1e-5;
@@ -110,7 +110,7 @@ TEST_CASE("a box on the ground shows its colour where it is, the sky and the gro
   const int width = 160, height = 120;
   const kit::Image image = kit::render_rigid(box, resting, camera, width, height);
   const kit::Image backdrop = kit::render_rigid(nothing(), resting, camera, width, height);
-  const kit::SpriteCamera view(camera, width, height);
+  const kit::Pinhole view(camera, width, height);
   const auto centre = view.project(0, 0.1, 0);
   REQUIRE(centre);
   CHECK(body_coloured(image.pixel(int(centre->px), int(centre->py)), kit::rigid_part_colour(0)));
@@ -172,7 +172,7 @@ TEST_CASE("a turned body renders differently; the T-handle's bar and stem show t
 TEST_CASE("the default camera keeps a falling box and a spinning T-handle in the picture", "[rigid][render]") {
   const int width = 160, height = 120;
   auto all_in_view = [&](const kit::RigidShape& shape, const std::vector<kit::RigidState>& frames, bool ground) {
-    const kit::SpriteCamera view(kit::rigid_camera(shape, frames, ground, double(width) / height), width, height);
+    const kit::Pinhole view(kit::rigid_camera(shape, frames, ground, double(width) / height), width, height);
     bool inside = true;
     for (const kit::RigidState& state : frames)
       for (const kit::BoxPart& part : shape.parts)

@@ -16,7 +16,7 @@
 #include <kit/render/animation.hpp>
 #include <kit/render/contact_sheet.hpp>
 #include <kit/render/image.hpp>
-#include <kit/render/sprite_camera.hpp>
+#include <kit/render/camera.hpp>
 #include <kit/sprites/blend.hpp>
 #include <kit/sprites/particles.hpp>
 #include <kit/sprites/sprite_renderer.hpp>
@@ -36,7 +36,7 @@ std::string opaque_white_png(const kit::test::TempDir& dir) {
 }
 
 // Looking from z = 10 at the origin with a 90° field of view: focal length = height/2 pixels.
-kit::SpriteScene scene_with(std::vector<kit::Emitter> emitters, kit::Vec3d background = {0.5, 0.5, 0.5}) {
+kit::SpriteScene scene_with(std::vector<kit::Emitter> emitters, kit::Colour background = {0.5, 0.5, 0.5}) {
   kit::SpriteScene scene;
   scene.camera = {{0, 0, 10}, {0, 0, 0}, 90};
   scene.background = background;
@@ -75,7 +75,7 @@ bool every_pixel_is(const kit::Image& image, float r, float g, float b) {
   return true;
 }
 
-double total_light(const kit::Image& image, const kit::Vec3d& background) {
+double total_light(const kit::Image& image, const kit::Colour& background) {
   double sum = 0;
   for (std::size_t k = 0; k < image.rgb.size(); ++k) sum += image.rgb[k] - background[k % 3];
   return sum;
@@ -193,7 +193,7 @@ TEST_CASE("additive sprites are order independent: swapping the particles gives 
 TEST_CASE("the camera projects its target to the image centre and a point above it to a smaller row",
           "[sprite-render]") {
   kit::Camera camera{{1, 2, 10}, {1, 2, 0}, 45};
-  const kit::SpriteCamera pinhole(camera, 64, 48);
+  const kit::Pinhole pinhole(camera, 64, 48);
   const auto target = pinhole.project(1, 2, 0);
   REQUIRE(target);
   CHECK(target->px == Approx(32.0).margin(1e-9));
@@ -211,10 +211,10 @@ TEST_CASE("the camera projects its target to the image centre and a point above 
   CHECK(target->py - above->py == Approx(focal / 10));
   CHECK_FALSE(pinhole.project(1, 2, 20));  // behind the camera
   CHECK_FALSE(pinhole.project(1, 2, 9.99));  // nearer than the near plane
-  CHECK_THROWS_AS(kit::SpriteCamera(kit::Camera{{0, 0, 0}, {0, 0, 0}, 45}, 8, 8), kit::UsageError);
-  CHECK_THROWS_AS(kit::SpriteCamera(kit::Camera{{0, 0, 1}, {0, 0, 0}, 180}, 8, 8), kit::UsageError);
+  CHECK_THROWS_AS(kit::Pinhole(kit::Camera{{0, 0, 0}, {0, 0, 0}, 45}, 8, 8), kit::UsageError);
+  CHECK_THROWS_AS(kit::Pinhole(kit::Camera{{0, 0, 1}, {0, 0, 0}, 180}, 8, 8), kit::UsageError);
   // Looking straight down still has a frame.
-  const kit::SpriteCamera down(kit::Camera{{0, 10, 0}, {0, 0, 0}, 60}, 8, 8);
+  const kit::Pinhole down(kit::Camera{{0, 10, 0}, {0, 0, 0}, 60}, 8, 8);
   const auto ground = down.project(0, 0, 0);
   REQUIRE(ground);
   CHECK(ground->px == Approx(4.0));
@@ -222,7 +222,7 @@ TEST_CASE("the camera projects its target to the image centre and a point above 
 
 TEST_CASE("pixels per metre is the focal length over depth, and a sprite is that many pixels wide",
           "[sprite-render]") {
-  const kit::SpriteCamera pinhole(kit::Camera{{0, 0, 10}, {0, 0, 0}, 90}, 100, 100);
+  const kit::Pinhole pinhole(kit::Camera{{0, 0, 10}, {0, 0, 0}, 90}, 100, 100);
   CHECK(pinhole.focal_px() == Approx(50.0));
   CHECK(pinhole.pixels_per_metre(10) == Approx(5.0));
   CHECK(pinhole.pixels_per_metre(20) == Approx(2.5));
@@ -319,7 +319,7 @@ TEST_CASE("write_png writes a valid PNG and, when it cannot, throws naming the p
 
 TEST_CASE("a contact sheet tiles the frames in rows with gaps around and between them", "[sprite-render]") {
   std::vector<kit::Image> frames;
-  for (int n = 0; n < 5; ++n) frames.emplace_back(10, 6, kit::Vec3d{0.1 * n, 1, 0});
+  for (int n = 0; n < 5; ++n) frames.emplace_back(10, 6, kit::Colour{0.1 * n, 1, 0});
   const kit::Image sheet = kit::contact_sheet(frames, 3, 2);
   CHECK(sheet.width == 3 * 10 + 4 * 2);
   CHECK(sheet.height == 2 * 6 + 3 * 2);

@@ -138,7 +138,7 @@ axis = [0, 0, 2]
   CHECK(e.speed.mean == 3.0);
   CHECK(e.speed.variance == 0.5);
   CHECK(e.lifetime.variance == 0.0);
-  CHECK(e.axis == kit::Vec3d{0, 0, 1});  // normalised
+  CHECK(e.axis == kit::Vec3{0, 0, 1});  // normalised
 }
 
 TEST_CASE("a rate's variance may exceed its mean: negative draws emit nothing", "[sprite-scene]") {

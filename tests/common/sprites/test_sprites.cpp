@@ -64,11 +64,11 @@ TEST_CASE("directions are uniform over the cap: inside the cone, E[cos θ] = (1 
           "[sprites]") {
   kit::Random random(11);
   const int n = 100000;
-  const kit::Vec3d axis{0, 0.6, 0.8};
+  const kit::Vec3 axis{0, 0.6, 0.8};
   for (const double angle : {20.0, 90.0, 180.0}) {
     double cos_min = 1, cos_sum = 0, worst_norm = 0;
     for (int k = 0; k < n; ++k) {
-      const kit::Vec3d d = kit::direction_in_cap(axis, angle, random);
+      const kit::Vec3 d = kit::direction_in_cap(axis, angle, random);
       const double c = d[0] * axis[0] + d[1] * axis[1] + d[2] * axis[2];
       worst_norm = std::max(worst_norm, std::abs(std::hypot(d[0], d[1], d[2]) - 1));
       cos_min = std::min(cos_min, c), cos_sum += c;
@@ -88,7 +88,7 @@ TEST_CASE("points are uniform over the disc's area and the ball's volume", "[spr
   int disc_inner = 0, ball_inner = 0;
   double off_plane = 0;
   for (int k = 0; k < n; ++k) {
-    const kit::Vec3d p = kit::offset_in_disc({0, 1, 0}, 2.0, random);
+    const kit::Vec3 p = kit::offset_in_disc({0, 1, 0}, 2.0, random);
     off_plane = std::max(off_plane, std::abs(p[1]));  // in the plane normal to the axis
     disc_inner += std::hypot(p[0], p[2]) < 1.0;  // the inner half radius holds 1/4 of the area
     const kit::BallPoint b = kit::point_in_ball(2.0, random);
@@ -178,7 +178,7 @@ TEST_CASE("the motion computes only the forces and rates a scene lists", "[sprit
   const kit::UpdateWork bare = work_of();
   CHECK(bare.particle_steps == 1000);
   CHECK(bare.gravity + bare.drag + bare.colour + bare.alpha + bare.size == 0);
-  scene.forces.gravity = kit::Vec3d{0, -9.81, 0};
+  scene.forces.gravity = kit::Vec3{0, -9.81, 0};
   scene.emitters[0].alpha_rate = -0.5;
   const kit::UpdateWork more = work_of();
   CHECK(more.gravity == 1000);

@@ -6,24 +6,14 @@
 #include <kit/cloth/cloth.hpp>
 #include <kit/cloth/cloth_scene.hpp>
 #include <kit/render/image.hpp>
+#include <kit/render/raster.hpp>  // the scene's palette: sky, key light, ambient
 
 namespace kit {
 
 /// The sheet's two sides, linear RGB before lighting: warm on the side u×v points to (front),
 /// cool on the other, so that a fold shows where the sheet turns over.
-inline constexpr Vec3d cloth_front_colour{0.92, 0.46, 0.30};
-inline constexpr Vec3d cloth_back_colour{0.36, 0.55, 0.86};
-/// The background sky: cloth_sky_bottom at the horizon (and below it), blending to cloth_sky_top
-/// looking 30° or more upwards, so the ground's haze meets the sky without a seam.
-inline constexpr Vec3d cloth_sky_top{0.36, 0.45, 0.60};
-inline constexpr Vec3d cloth_sky_bottom{0.80, 0.82, 0.85};
-/// The sky's colour seen along a direction whose unit vector has this y component.
-Vec3d cloth_sky(double elevation);
-/// The key light: the unit direction towards it (world, y up), from above, in front and left.
-inline constexpr Vec3d cloth_key_light{-0.4364357804719848, 0.8728715609439696, 0.2182178902359924};
-/// Light every surface gets whatever its orientation, as a fraction of full light (a surface
-/// facing the key light gets 1; a dim fill light from the other side adds a little, capped at 1).
-inline constexpr double cloth_ambient = 0.30;
+inline constexpr Colour cloth_front_colour{0.92, 0.46, 0.30};
+inline constexpr Colour cloth_back_colour{0.36, 0.55, 0.86};
 
 /// What render_cloth drew.
 struct ClothRenderStats {
@@ -36,9 +26,9 @@ struct ClothRenderStats {
 /// squares fading into the horizon, each sphere collider (ray cast per pixel), then the cloth's
 /// triangles (split as in write_cloth_obj) depth-tested, lit by the key light (Lambert) plus
 /// ambient with per-vertex normals (vertex_normals), two-sided: each side its own colour.
-/// A triangle with a non-finite vertex, a vertex nearer than SpriteCamera::near_depth, or one
+/// A triangle with a non-finite vertex, a vertex nearer than Pinhole::near_depth, or one
 /// beyond a million pixels from the image (a diverged sheet) is skipped, never drawn in part;
-/// the others are clipped to the image. Throws as SpriteCamera for a bad camera or size and as
+/// the others are clipped to the image. Throws as Pinhole for a bad camera or size and as
 /// vertex_normals for positions that do not fit the grid.
 Image render_cloth(const ClothGrid& grid, const NodeArray& x, const ClothScene& scene, int width, int height,
                    ClothRenderStats* stats = nullptr);

@@ -8,6 +8,7 @@
 
 #include <kit/base/enum_names.hpp>
 #include <kit/cloth/cloth.hpp>
+#include <kit/render/camera.hpp>
 
 namespace kit {
 
@@ -52,13 +53,6 @@ inline const char* flag_name(ClothIntegrator integrator) { return cloth_integrat
 inline const char* display_name(ClothIntegrator integrator) { return cloth_integrator_names.display(integrator); }
 int stages(ClothIntegrator integrator);  ///< force evaluations per step
 
-/// Where the camera of the rendered frames looks from.
-struct ClothCamera {
-  Vec3 position{0, 1, 3};  ///< [m]
-  Vec3 target{0, 0.5, 0};  ///< [m]
-  double fov_deg = 40;        ///< vertical field of view [deg], in (0, 180)
-};
-
 struct ClothScene {
   std::string name;
   std::string description;
@@ -70,7 +64,7 @@ struct ClothScene {
   std::vector<SphereCollider> spheres;
   std::optional<GroundCollider> ground;
   std::optional<StrainLimit> strain_limit;
-  ClothCamera camera;
+  Camera camera{{0, 1, 3}, {0, 0.5, 0}, 40};  ///< where the rendered frames look from
   // How the scene runs by default (flags override).
   ClothIntegrator integrator = ClothIntegrator::symplectic_euler;
   double dt = 1e-4;   ///< [s]

@@ -8,7 +8,7 @@
 namespace kit {
 
 /// The background between and around the frames: a dark grey, linear RGB.
-inline constexpr Vec3d contact_sheet_background{0.12, 0.12, 0.12};
+inline constexpr Colour contact_sheet_background{0.12, 0.12, 0.12};
 
 /// Tiles `frames` left to right, top to bottom, in min(columns, frames.size()) columns, each
 /// cell as large as the largest frame (a smaller frame sits in its cell's top-left corner), with

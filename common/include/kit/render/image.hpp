@@ -1,14 +1,18 @@
 #pragma once
 // The picture a sprite renderer draws into (chapter 5): linear float RGB, so that blending adds
 // and averages light, not encoded 8-bit values; quantised only when written to a PNG.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
 
-#include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
+
+/// A colour: linear RGB, each in [0, 1] (more, before a picture is clamped). Not a Vec3: colours
+/// are mixed and scaled, never rotated or projected.
+using Colour = std::array<double, 3>;
 
 /// A linear RGB image, 3 floats per pixel, rows stored top to bottom (row 0 is the top).
 /// Values may exceed 1 (additive glows); write_png clamps them only at output.
@@ -18,10 +22,10 @@ struct Image {
 
   Image() = default;
   /// A width × height image filled with `fill`. Throws std::invalid_argument unless both are ≥ 1.
-  Image(int width, int height, Vec3d fill);
+  Image(int width, int height, Colour fill);
 
   /// Sets every pixel to `colour`.
-  void fill(Vec3d colour);
+  void fill(Colour colour);
   float* pixel(int x, int y) { return rgb.data() + offset(x, y); }
   const float* pixel(int x, int y) const { return rgb.data() + offset(x, y); }
 

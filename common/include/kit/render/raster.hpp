@@ -2,7 +2,7 @@
 // The software rasteriser the 3D renderers share (the cloth of chapters 6 and 7, the rigid bodies of
 // chapter 8): a picture with its depth buffer, the backdrop every pixel's ray sees first (the sky and
 // a checkerboard ground, lit and shadowed), the lighting, and depth-tested triangles. All seen
-// through the pinhole camera of chapter 5 (SpriteCamera, y up); colours are linear RGB.
+// through the kit's pinhole camera (camera.hpp, y up); colours are linear RGB.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -14,20 +14,30 @@
 #include <Eigen/Dense>
 
 #include <kit/base/vec3.hpp>
-#include <kit/cloth/cloth_renderer.hpp>  // the palette: cloth_sky, cloth_key_light, cloth_ambient
+#include <kit/render/camera.hpp>
 #include <kit/render/image.hpp>
-#include <kit/render/sprite_camera.hpp>
 
 namespace kit {
 
-inline Vec3 to_vector3(const Vec3d& v) { return {v[0], v[1], v[2]}; }
-inline Vec3d to_vec3d(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+// The scene palette of the cloth and rigid-body pictures.
+/// The background sky: cloth_sky_bottom at the horizon (and below it), blending to cloth_sky_top
+/// looking 30° or more upwards, so the ground's haze meets the sky without a seam.
+inline constexpr Colour cloth_sky_top{0.36, 0.45, 0.60};
+inline constexpr Colour cloth_sky_bottom{0.80, 0.82, 0.85};
+/// The sky's colour seen along a direction whose unit vector has this y component.
+Colour cloth_sky(double elevation);
+/// The key light: the unit direction towards it (world, y up), from above, in front and left.
+inline const Vec3 cloth_key_light{-0.4364357804719848, 0.8728715609439696, 0.2182178902359924};
+/// Light every surface gets whatever its orientation, as a fraction of full light (a surface
+/// facing the key light gets 1; a dim fill light from the other side adds a little, capped at 1).
+inline constexpr double cloth_ambient = 0.30;
+
 /// The colour a + (b − a) t: t = 0 gives a, t = 1 gives b.
-inline Vec3d mix_colours(const Vec3d& a, const Vec3d& b, double t) {
+inline Colour mix_colours(const Colour& a, const Colour& b, double t) {
   return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
 }
 /// The colour c dimmed (or brightened) by the factor s.
-inline Vec3d scale_colour(const Vec3d& c, double s) { return {c[0] * s, c[1] * s, c[2] * s}; }
+inline Colour scale_colour(const Colour& c, double s) { return {c[0] * s, c[1] * s, c[2] * s}; }
 
 /// A picture being drawn and its depth buffer: per pixel the depth [m, along the view axis] of
 /// what it shows, +infinity where that is the sky.
@@ -36,11 +46,11 @@ struct DepthCanvas {
   std::vector<float> depth;
 
   /// A width × height canvas of `fill`, infinitely deep. Throws as Image for a bad size.
-  DepthCanvas(int width, int height, const Vec3d& fill);
+  DepthCanvas(int width, int height, const Colour& fill);
   float& depth_at(int px, int py) {
     return depth[std::size_t(py) * std::size_t(image.width) + std::size_t(px)];
   }
-  void put(int px, int py, const Vec3d& colour) {
+  void put(int px, int py, const Colour& colour) {
     float* p = image.pixel(px, py);
     p[0] = float(colour[0]), p[1] = float(colour[1]), p[2] = float(colour[2]);
   }
@@ -56,7 +66,7 @@ double light_intensity(const Vec3& unit_normal);
 /// What a ray meets: the colour it brings back and the depth there [m along the view axis;
 /// +infinity for the sky].
 struct RayHit {
-  Vec3d colour{};
+  Colour colour{};
   double depth = std::numeric_limits<double>::infinity();
 };
 
@@ -67,7 +77,7 @@ inline constexpr double ground_checker_square = 0.25;
 using ShadowTest = std::function<bool(const Vec3& ground_point)>;
 
 /// What may stand in front of the backdrop along a ray (from the camera's eye, view-axis
-/// component 1, as SpriteCamera::ray): given the ray and what the backdrop shows along it, it
+/// component 1, as Pinhole::ray): given the ray and what the backdrop shows along it, it
 /// replaces that with anything nearer (the cloth's spheres). Empty: nothing.
 using RayForeground = std::function<void(const Vec3& ray, RayHit& hit)>;
 
@@ -76,7 +86,7 @@ using RayForeground = std::function<void(const Vec3& ray, RayHit& hit)>;
 /// checkerboard of ground_checker_square, lit from above by the key light unless `in_shadow`
 /// says it is blocked (then by the ambient alone), fading to its mean colour and then into the
 /// horizon's haze once a square spans only a few pixels (it would alias); then `in_front`.
-void draw_backdrop(const SpriteCamera& camera, const std::optional<double>& ground_height,
+void draw_backdrop(const Pinhole& camera, const std::optional<double>& ground_height,
                    const ShadowTest& in_shadow, const RayForeground& in_front, DepthCanvas& canvas);
 
 /// A vertex projected on the image: pixel coordinates (as Projected) and depth [m].
@@ -89,12 +99,12 @@ struct ScreenVertex {
 inline constexpr double max_pixel_coordinate = 1e6;
 
 /// Where `point` [m] lands on the image, or nullopt when it cannot be drawn: not finite, nearer
-/// than SpriteCamera::near_depth (or behind the eye), or beyond max_pixel_coordinate.
-std::optional<ScreenVertex> screen_vertex(const SpriteCamera& camera, const Vec3& point);
+/// than Pinhole::near_depth (or behind the eye), or beyond max_pixel_coordinate.
+std::optional<ScreenVertex> screen_vertex(const Pinhole& camera, const Vec3& point);
 
 /// Fills the triangle (a, b, c), either winding, clipped to the canvas: each pixel whose centre
 /// lies inside and whose depth (1/depth interpolated linearly on screen, as perspective makes it)
-/// is nearer than the stored one gets the colour `shade(wa, wb, wc)` returns (a Vec3d), given the
+/// is nearer than the stored one gets the colour `shade(wa, wb, wc)` returns (a Colour), given the
 /// perspective-correct barycentric weights of a, b, c (≥ 0, summing to 1) to interpolate with.
 /// A tie goes to the triangle: a depth bias of 1e-4 of the depth (0.3 mm at 3 m) lets a surface
 /// lying on the ground win instead of flickering against it. Returns false, drawing nothing, for

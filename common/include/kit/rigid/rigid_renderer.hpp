@@ -13,14 +13,14 @@ namespace kit {
 
 /// The colour of part k of a body, linear RGB before lighting: warm for part 0 (a box, the
 /// T-handle's bar), cool for part 1 (the T-handle's stem), then green and grey, cycling.
-Vec3d rigid_part_colour(std::size_t part);
+Colour rigid_part_colour(std::size_t part);
 
 /// Renders the body `shape` at `state` as a width × height image: the sky, the ground y = 0 with
 /// the body's shadow (the key light blocked by a part), then each part's faces that turn towards
 /// the camera, two triangles each, depth-tested and flat-shaded: rigid_part_colour(part) times
 /// light_intensity(face normal) (raster.hpp). A face with a corner that cannot be projected (not
-/// finite, nearer than SpriteCamera::near_depth, far off the image) is skipped: a diverged body
-/// leaves the picture, not the run. Throws as SpriteCamera for a bad camera or size.
+/// finite, nearer than Pinhole::near_depth, far off the image) is skipped: a diverged body
+/// leaves the picture, not the run. Throws as Pinhole for a bad camera or size.
 Image render_rigid(const RigidShape& shape, const RigidState& state, const Camera& camera, int width, int height);
 
 /// The view rigid runs are seen in: from the front (+z), right and 20° above, at the middle of

@@ -19,18 +19,18 @@ inline double draw(const Spread& s, Random& random) { return s.mean + random.sym
 
 /// A unit vector uniform over the cap of half-angle `angle_deg` around the unit vector `axis`
 /// (180° is the whole sphere): cos θ uniform in [cos angle, 1], φ uniform in [0, 2π).
-Vec3d direction_in_cap(const Vec3d& axis, double angle_deg, Random& random);
+Vec3 direction_in_cap(const Vec3& axis, double angle_deg, Random& random);
 
 /// A point uniform on the disc of `radius` [m] centred at the origin, normal to the unit `axis`:
 /// r = R·√rand, so that equal areas are equally likely.
-Vec3d offset_in_disc(const Vec3d& axis, double radius, Random& random);
+Vec3 offset_in_disc(const Vec3& axis, double radius, Random& random);
 
 /// A point uniform in the ball of `radius` [m] centred at the origin, with its unit direction
 /// from the centre (r = R·∛rand along a uniform direction). For the sphere shape, the direction
 /// is also the particle's direction of flight.
 struct BallPoint {
-  Vec3d offset;     ///< [m]
-  Vec3d direction;  ///< unit
+  Vec3 offset;     ///< [m]
+  Vec3 direction;  ///< unit
 };
 BallPoint point_in_ball(double radius, Random& random);
 

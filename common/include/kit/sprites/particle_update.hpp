@@ -87,7 +87,7 @@ class ParticleUpdate {
   void change_attributes(Particles& particles, double h);
 
   Integrator integrator_;
-  Vec3d gravity_{0, 0, 0}, wind_{0, 0, 0};
+  Vec3 gravity_{0, 0, 0}, wind_{0, 0, 0};
   double drag_ = 0;
   bool has_gravity_ = false, has_drag_ = false;
   bool has_colour_rate_ = false, has_alpha_rate_ = false, has_size_rate_ = false;

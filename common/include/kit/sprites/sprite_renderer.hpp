@@ -7,7 +7,7 @@
 #include <vector>
 
 #include <kit/render/image.hpp>
-#include <kit/render/sprite_camera.hpp>
+#include <kit/render/camera.hpp>
 #include <kit/sprites/particles.hpp>
 #include <kit/sprites/sprite_scene.hpp>
 #include <kit/sprites/sprite_texture.hpp>
@@ -41,7 +41,7 @@ class SpriteRenderer {
   /// emitter index the scene does not have.
   RenderStats render(const Particles& particles, Image& out);
 
-  const SpriteCamera& camera() const { return camera_; }
+  const Pinhole& camera() const { return camera_; }
   /// From now on, "over" sprites are rasterized into a SpriteTile and composited by `composite`
   /// (the student's ex 5.3); nullptr: the renderer blends them itself, pixel by pixel, as it
   /// always does additive ones. Both give the same image for a correct `composite`.
@@ -60,8 +60,8 @@ class SpriteRenderer {
   template <class Target>
   long draw(const Sprite& sprite, const Particles& particles, Image& out, Target target);
 
-  SpriteCamera camera_;
-  Vec3d background_;
+  Pinhole camera_;
+  Colour background_;
   std::vector<Blend> blend_of_emitter_;
   std::vector<std::vector<Texture>> textures_;         // mip_levels of each distinct texture
   std::map<std::string, std::size_t> texture_index_;   // texture name or path -> textures_

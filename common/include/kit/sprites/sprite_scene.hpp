@@ -8,10 +8,13 @@
 #include <vector>
 
 #include <kit/base/enum_names.hpp>
+#include <kit/base/vec3.hpp>
+#include <kit/render/camera.hpp>
+#include <kit/render/image.hpp>
 
 namespace kit {
 
-using Vec3d = std::array<double, 3>;  ///< x, y, z; y is up
+using Vec3d = Vec3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
 
 /// Reeves's stochastic attribute: mean + rand·variance with rand uniform in [−1, 1]. Reeves's
 /// "variance" is the half-width of that uniform law; its statistical variance is variance²/3.
@@ -48,20 +51,20 @@ static_assert(blend_names.in_order());
 struct Emitter {
   std::string name;
   EmitterShape shape = EmitterShape::point;
-  Vec3d position{0, 0, 0};  ///< [m]
-  Vec3d axis{0, 1, 0};      ///< unit direction (normalised on load)
+  Vec3 position{0, 0, 0};  ///< [m]
+  Vec3 axis{0, 1, 0};      ///< unit direction (normalised on load)
   double radius = 0;        ///< disc and sphere [m]
   double angle_deg = 0;     ///< disc and cone half-angle [deg], in [0, 180]
   Spread rate;              ///< particles per frame (a fraction rounds up with that probability)
   Spread speed;             ///< initial speed [m/s]
   Spread lifetime{1, 0};    ///< [s]; mean − variance > 0
   Spread size{0.1, 0};      ///< sprite edge [m]
-  Vec3d colour{1, 1, 1};    ///< mean linear RGB in [0, 1]
-  Vec3d colour_variance{0, 0, 0};
+  Colour colour{1, 1, 1};    ///< mean linear RGB in [0, 1]
+  Colour colour_variance{0, 0, 0};
   Spread alpha{1, 0};       ///< opacity in [0, 1]
   // Rates of change over a particle's life (Reeves: per frame; here per second, so Δt can vary).
   // Zero means the attribute stays constant and nothing is computed for it.
-  Vec3d colour_rate{0, 0, 0};  ///< [1/s]
+  Colour colour_rate{0, 0, 0};  ///< [1/s]
   double alpha_rate = 0;       ///< [1/s], negative fades out
   double size_rate = 0;        ///< [m/s]
   Blend blend = Blend::over;
@@ -77,22 +80,16 @@ struct Emitter {
 
 /// The forces of the scene; each one is there only when the scene names it.
 struct SpriteForces {
-  std::optional<Vec3d> gravity;  ///< [m/s²]
+  std::optional<Vec3> gravity;  ///< [m/s²]
   std::optional<double> drag;    ///< linear drag rate k [1/s]: a = −k (v − wind)
-  std::optional<Vec3d> wind;     ///< [m/s]; acts through drag, so it needs drag
+  std::optional<Vec3> wind;     ///< [m/s]; acts through drag, so it needs drag
 };
 
 /// What kills a particle besides its lifetime.
 struct DeathRules {
   std::optional<double> alpha_below;  ///< opacity threshold in [0, 1)
   /// Axis-aligned box [m]; leaving it kills.
-  std::optional<std::array<Vec3d, 2>> region;
-};
-
-struct Camera {
-  Vec3d position{0, 2, 10};  ///< [m]
-  Vec3d target{0, 2, 0};     ///< [m]
-  double fov_deg = 45;       ///< vertical field of view [deg]
+  std::optional<std::array<Vec3, 2>> region;
 };
 
 /// The largest max_particles a flag or scene file may ask for: a bound on the count, beyond the
@@ -113,7 +110,7 @@ struct SpriteScene {
   SpriteForces forces;
   DeathRules death;
   Camera camera;
-  Vec3d background{0.02, 0.02, 0.05};  ///< linear RGB
+  Colour background{0.02, 0.02, 0.05};  ///< linear RGB
 };
 
 }  // namespace kit
