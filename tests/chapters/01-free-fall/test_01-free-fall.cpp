@@ -6,6 +6,7 @@
 #include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "chapter_run.hpp"
 #include "process.hpp"
 
 using nlohmann::json;
@@ -13,17 +14,8 @@ using nlohmann::json;
 namespace {
 const std::string binary = KIT_CHAPTER_BINARY;
 
-struct Run {
-  kit::test::ProcessResult process;
-  json summary;
-};
-Run run_chapter(const std::vector<std::string>& args) {
-  Run run{kit::test::run_process(binary, args), {}};
-  INFO(run.process.err);
-  REQUIRE(run.process.exit_code == 0);
-  run.summary = json::parse(run.process.out);
-  return run;
-}
+// The arguments as given (each test names its own --out), and the process too: stderr is checked.
+kit::test::ChapterRun run_chapter(const std::vector<std::string>& args) { return kit::test::run_chapter(binary, args); }
 }  // namespace
 
 TEST_CASE("chapter 1 reports both Euler errors as exactly k/2·Δt²·|g|, explicit above, implicit below") {

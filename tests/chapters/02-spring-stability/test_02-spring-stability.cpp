@@ -5,6 +5,7 @@
 #include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "chapter_run.hpp"
 #include "process.hpp"
 
 using nlohmann::json;
@@ -12,21 +13,14 @@ using nlohmann::json;
 namespace {
 const std::string binary = KIT_CHAPTER_BINARY;
 
-json run_chapter(std::vector<std::string> args, int expected_exit = 0);
+json run_chapter(const std::vector<std::string>& args, int expected_exit = 0) {
+  return kit::test::run_chapter_json(binary, args, "ch02", expected_exit);
+}
 
 // The default run, shared by the tests that only read it.
 const json& default_run() {
   static const json summary = run_chapter({});
   return summary;
-}
-
-json run_chapter(std::vector<std::string> args, int expected_exit) {
-  kit::test::TempDir out("ch02");
-  args.insert(args.end(), {"--json", "--no-plot", "--out", out.path().string()});
-  const auto result = kit::test::run_process(binary, args);
-  INFO(result.err);
-  REQUIRE(result.exit_code == expected_exit);
-  return json::parse(result.out);
 }
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "chapter_run.hpp"
 #include "process.hpp"
 
 using nlohmann::json;
@@ -15,14 +16,7 @@ using nlohmann::json;
 namespace {
 const std::string binary = KIT_CHAPTER_BINARY;
 
-json run_chapter(std::vector<std::string> args) {
-  kit::test::TempDir out("ch03");
-  args.insert(args.end(), {"--json", "--no-plot", "--out", out.path().string()});
-  const auto result = kit::test::run_process(binary, args);
-  INFO(result.err);
-  REQUIRE(result.exit_code == 0);
-  return json::parse(result.out);
-}
+json run_chapter(const std::vector<std::string>& args) { return kit::test::run_chapter_json(binary, args, "ch03"); }
 
 const json& default_run() {
   static const json summary = run_chapter({});

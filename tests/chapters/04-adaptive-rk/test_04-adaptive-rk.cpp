@@ -13,6 +13,7 @@
 
 #include <kit/base/measure.hpp>
 
+#include "chapter_run.hpp"
 #include "process.hpp"
 
 using nlohmann::json;
@@ -21,13 +22,7 @@ namespace {
 const std::string binary = KIT_CHAPTER_BINARY;
 
 const json& default_run() {
-  static const json summary = [] {
-    kit::test::TempDir out("ch04");
-    const auto result = kit::test::run_process(binary, {"--json", "--no-plot", "--out", out.path().string()});
-    INFO(result.err);
-    REQUIRE(result.exit_code == 0);
-    return json::parse(result.out);
-  }();
+  static const json summary = kit::test::run_chapter_json(binary, {}, "ch04");
   return summary;
 }
 

@@ -20,6 +20,7 @@
 #include <kit/sprites/sprite_scene_file.hpp>
 #include <kit/sprites/sprite_system.hpp>
 
+#include "chapter_run.hpp"
 #include "process.hpp"
 #include "sprite_kernels.hpp"
 
@@ -29,18 +30,10 @@ namespace fs = std::filesystem;
 namespace {
 const std::string binary = KIT_CHAPTER_BINARY;
 
-json run_chapter(std::vector<std::string> args, const fs::path& out) {
-  args.insert(args.end(), {"--json", "--out", out.string()});
-  const auto result = kit::test::run_process(binary, args);
-  INFO(result.err);
-  REQUIRE(result.exit_code == 0);
-  return json::parse(result.out);
+json run_chapter(const std::vector<std::string>& args, const fs::path& out) {
+  return kit::test::run_chapter_into(binary, args, out);
 }
-json run_chapter(std::vector<std::string> args) {
-  kit::test::TempDir out("ch05");
-  args.push_back("--no-plot");
-  return run_chapter(args, out.path());
-}
+json run_chapter(const std::vector<std::string>& args) { return kit::test::run_chapter_json(binary, args, "ch05"); }
 using kit::test::slurp;
 fs::path write_scene(const fs::path& dir, const std::string& name, const std::string& text) {
   std::ofstream(dir / name) << text;

@@ -18,6 +18,7 @@
 #include <kit/cloth/cloth_stability.hpp>
 #include <kit/render/obj_mesh.hpp>
 
+#include "chapter_run.hpp"
 #include "cloth_kernels.hpp"
 #include "cloth_mesh_dependence.hpp"
 #include "cloth_spring_force.hpp"
@@ -30,12 +31,8 @@ namespace {
 const std::string binary = KIT_CHAPTER_BINARY;
 const fs::path scenes = fs::path(KIT_CHAPTER_SOURCE_DIR) / "scenes";
 
-json run_chapter(std::vector<std::string> args, const fs::path& out) {
-  args.insert(args.end(), {"--json", "--out", out.string()});
-  const auto result = kit::test::run_process(binary, args);
-  INFO(result.err);
-  REQUIRE(result.exit_code == 0);
-  return json::parse(result.out);
+json run_chapter(const std::vector<std::string>& args, const fs::path& out) {
+  return kit::test::run_chapter_into(binary, args, out);
 }
 
 kit::ClothScene square_sheet(int n, bool shear, bool bend) {

@@ -20,6 +20,7 @@
 #include <kit/cloth/cloth_multigrid.hpp>
 #include <kit/cloth/cloth_scene_file.hpp>
 
+#include "chapter_run.hpp"
 #include "cloth_implicit_experiments.hpp"
 #include "cloth_implicit_wiring.hpp"
 #include "cloth_kernels.hpp"
@@ -32,12 +33,8 @@ namespace {
 const std::string binary = KIT_CHAPTER_BINARY;
 const fs::path scenes = fs::path(KIT_CHAPTER_SOURCE_DIR) / ".." / "06-cloth-explicit" / "scenes";
 
-json run_chapter(std::vector<std::string> args, const fs::path& out) {
-  args.insert(args.end(), {"--json", "--out", out.string()});
-  const auto result = kit::test::run_process(binary, args);
-  INFO(result.err);
-  REQUIRE(result.exit_code == 0);
-  return json::parse(result.out);
+json run_chapter(const std::vector<std::string>& args, const fs::path& out) {
+  return kit::test::run_chapter_into(binary, args, out);
 }
 
 kit::ClothScene sheet(double stiffness, int n = 8) {
