@@ -113,5 +113,8 @@ std::string gnuplot_string(const std::string& text);
 
 /// The gnuplot script for `figure` reading `data_file` (exposed for tests).
 std::string gnuplot_script(const Figure& figure, const std::string& data_file);
+/// The data file's text: a comment block, then one block per series (gnuplot's 'index'), x y
+/// per line, thinned as plotted_indices says; NaN for an undefined value.
+std::string figure_data_text(const Figure& figure);
 
 }  // namespace kit
