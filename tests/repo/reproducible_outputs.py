@@ -5,7 +5,7 @@ writes byte-identical files and the same summary. Timings are the one exception,
 named so: a file whose name holds "timing"; a summary field with "timing" in its name or a unit
 of time (seconds, ms, us, ns) as one of its words ("seconds", "scatter_ms", "ns_per_step"); a
 run's "estimate". PDFs count too: both runs set SOURCE_DATE_EPOCH, which fixes the creation date
-cairo would take from the clock (figure.cpp). The first run was made beside the rest of the
+cairo would take from the clock (figure_file.cpp). The first run was made beside the rest of the
 suite, the second here: a busy machine changes nothing but timings.
 
 Usage: reproducible_outputs.py BIN_DIR WORK_DIR FIGURES_DIR EPOCH
