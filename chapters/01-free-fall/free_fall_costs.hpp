@@ -1,9 +1,9 @@
 #pragma once
 // What a step of each kernel of chapter 1's round-off sweep costs, from short calibration runs
-// of the sweep's own kernels (kit/base/run_estimate.hpp): the chapter says how long the sweep will
+// of the sweep's own kernels (kit/app/run_estimate.hpp): the chapter says how long the sweep will
 // take before it starts, and its progress line counts each step at its cost.
+#include <kit/app/run_estimate.hpp>
 #include <kit/base/not_implemented.hpp>
-#include <kit/base/run_estimate.hpp>
 #include <kit/ode/step_budget.hpp>
 
 #include "free_fall_euler.hpp"

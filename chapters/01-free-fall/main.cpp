@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/app/step_count.hpp>
+#include <kit/ode/step_count.hpp>
 
 #include "euler_gap.hpp"
 #include "free_fall_costs.hpp"

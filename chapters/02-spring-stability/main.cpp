@@ -3,7 +3,7 @@
 // item 4); implicit Euler shrinks by the inverse, for every Δt (item 5); symplectic Euler stays
 // bounded while Δt < 2/ω (item 7). With damping, explicit Euler is stable iff Δt < μ/K (item 6).
 // Each critical step is measured by bisection on long runs and printed beside theory.
-#include <kit/app/step_count.hpp>
+#include <kit/ode/step_count.hpp>
 #include "spring_figures.hpp"
 #include "spring_flags.hpp"
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include <kit/app/look.hpp>
+#include <kit/app/progress.hpp>
 #include <kit/app/report.hpp>
-#include <kit/base/progress.hpp>
 #include <kit/ode/adaptive_run.hpp>
 #include <kit/ode/butcher_tableau.hpp>
 #include <kit/ode/embedded_run.hpp>

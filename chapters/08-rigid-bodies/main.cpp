@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include <kit/app/chapter_app.hpp>
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 
 #include <kit/rigid/rigid_renderer.hpp>
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 #include <kit/rigid/rigid_integrators.hpp>
 
 namespace kit {

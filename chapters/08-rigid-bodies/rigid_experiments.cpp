@@ -6,7 +6,7 @@
 #include <limits>
 #include <numeric>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 #include <kit/rigid/rigid_free_rotation.hpp>
 #include <kit/rigid/rigid_reference.hpp>
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include <kit/app/chapter_app.hpp>
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 #include <kit/rigid/rigid_contact.hpp>
 #include <kit/rigid/rigid_stepper.hpp>
 

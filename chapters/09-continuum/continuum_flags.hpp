@@ -4,7 +4,7 @@
 #include <string>
 
 #include <kit/app/chapter_app.hpp>
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 
 #include "continuum_experiments.hpp"
 

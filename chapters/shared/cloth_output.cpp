@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 
 #include <kit/cloth/cloth_renderer.hpp>
+#include <kit/cloth/obj_mesh.hpp>
 #include <kit/render/frame_writer.hpp>
-#include <kit/render/obj_mesh.hpp>
 
 namespace kit {
 namespace fs = std::filesystem;

@@ -9,7 +9,9 @@ Checks:
   - every folder that holds a tracked file is in the map (a layer folder of common/include/kit/
     counts as named by its common/src/ twin);
   - common/include/kit/ and common/src/ have the same layer folders;
-  - no folder holds more than MAX_FILES tracked files (the kit's root aside).
+  - no folder holds more than MAX_FILES tracked files (the kit's root aside);
+  - each layer of common/ includes (#include <kit/LAYER/...>) only the layers MAY_INCLUDE gives it,
+    as README.md's "Layers inside common/" says.
 
 Usage: tree_map.py [KIT_ROOT]   exit 0 when all hold, 1 with each problem otherwise.
 """
@@ -20,6 +22,16 @@ import subprocess
 import sys
 
 MAX_FILES = 35
+# What each layer of common/ may include besides itself: the layers below it, and what those may.
+BELOW = {"base": [], "app": ["base"], "ode": ["app"], "problems": ["ode"], "render": ["app"],
+         "sprites": ["render"], "cloth": ["render"], "rigid": ["ode", "render"], "fem": ["cloth"]}
+
+
+def may_include(layer):
+    allowed = set()
+    for lower in BELOW.get(layer, []):
+        allowed |= {lower} | may_include(lower)
+    return allowed
 
 
 def map_folders(readme):
@@ -71,6 +83,15 @@ def main(argv):
             problems.append(f"{folder}/ holds tracked files and is not in the map")
         if count > MAX_FILES:
             problems.append(f"{folder}/ holds {count} files, more than {MAX_FILES}")
+    for layer in sorted(layers | sources):
+        if layer not in BELOW:
+            problems.append(f"common's layer {layer}/ has no place in tree_map.py's BELOW")
+            continue
+        for folder in (include / layer, src / layer):
+            for path in sorted(folder.glob("*.?pp")):
+                for other in re.findall(r"^\s*#\s*include\s*<kit/(\w+)/", path.read_text(encoding="utf-8"), re.M):
+                    if other != layer and other not in may_include(layer):
+                        problems.append(f"{path.relative_to(root)} ({layer}/) includes the layer {other}/, above it")
     for problem in sorted(set(problems)):
         print("FAILED:", problem)
     if not problems:

@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include <kit/render/obj_mesh.hpp>
+#include <kit/cloth/obj_mesh.hpp>
 #include <kit/render/raster.hpp>
 
 namespace kit {

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 
 namespace kit {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include <kit/app/progress.hpp>
 #include <kit/base/measure.hpp>
-#include <kit/base/progress.hpp>
 #include <kit/base/stopwatch.hpp>
 
 namespace kit {

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 #include <kit/ode/run_fields.hpp>
 
 namespace kit {

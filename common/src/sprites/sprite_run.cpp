@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 
 namespace kit {
 namespace {

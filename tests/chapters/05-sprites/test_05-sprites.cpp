@@ -16,7 +16,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 #include <kit/sprites/sprite_scene_file.hpp>
 #include <kit/sprites/sprite_system.hpp>
 

@@ -16,7 +16,7 @@
 #include <kit/cloth/cloth_run.hpp>
 #include <kit/cloth/cloth_scene_file.hpp>
 #include <kit/cloth/cloth_stability.hpp>
-#include <kit/render/obj_mesh.hpp>
+#include <kit/cloth/obj_mesh.hpp>
 
 #include "chapter_run.hpp"
 #include "cloth_kernels.hpp"

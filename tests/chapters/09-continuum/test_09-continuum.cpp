@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <kit/render/obj_mesh.hpp>
+#include <kit/cloth/obj_mesh.hpp>
 
 #include "chapter_run.hpp"
 #include "continuum_experiments.hpp"

@@ -11,9 +11,9 @@
 #include <kit/cloth/cloth.hpp>
 #include <kit/cloth/cloth_renderer.hpp>
 #include <kit/cloth/cloth_scene.hpp>
+#include <kit/cloth/obj_mesh.hpp>
 #include <kit/render/frame_writer.hpp>
 #include <kit/render/image.hpp>
-#include <kit/render/obj_mesh.hpp>
 
 #include "process.hpp"
 

@@ -10,10 +10,10 @@
 #include <kit_catch.hpp>
 
 #include <kit/cloth/cloth_renderer.hpp>
+#include <kit/cloth/obj_mesh.hpp>
 #include <kit/render/animation.hpp>
-#include <kit/render/image.hpp>
-#include <kit/render/obj_mesh.hpp>
 #include <kit/render/camera.hpp>
+#include <kit/render/image.hpp>
 #include <kit/rigid/rigid_body.hpp>
 #include <kit/rigid/rigid_renderer.hpp>
 

@@ -20,8 +20,8 @@
 #include <nlohmann/json.hpp>
 
 #include <kit/app/figure.hpp>
+#include <kit/app/progress.hpp>
 #include <kit/app/report.hpp>
-#include <kit/base/progress.hpp>
 #include <kit/base/real_range.hpp>
 #include <kit/base/usage.hpp>
 

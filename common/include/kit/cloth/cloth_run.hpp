@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 #include <kit/cloth/cloth_implicit_step.hpp>
 #include <kit/cloth/cloth_system.hpp>
 

@@ -18,7 +18,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 #include <kit/base/state.hpp>
 #include <kit/ode/adaptive_run.hpp>
 #include <kit/ode/dopri5_coefficients.hpp>

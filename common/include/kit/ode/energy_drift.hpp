@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 
 namespace kit {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 #include <kit/base/state.hpp>
 
 namespace kit {

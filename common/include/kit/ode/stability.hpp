@@ -11,7 +11,7 @@
 #include <limits>
 #include <vector>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 #include <kit/base/state.hpp>
 
 namespace kit {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include <kit/app/report.hpp>
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 
 namespace kit {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <kit/app/report.hpp>
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 #include <kit/base/state.hpp>
 #include <kit/ode/adaptive_run.hpp>
 #include <kit/problems/adaptive_rk_models.hpp>

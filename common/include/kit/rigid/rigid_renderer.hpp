@@ -5,9 +5,9 @@
 #include <cstddef>
 #include <vector>
 
+#include <kit/render/camera.hpp>
 #include <kit/render/image.hpp>
 #include <kit/rigid/rigid_body.hpp>
-#include <kit/sprites/sprite_scene.hpp>
 
 namespace kit {
 

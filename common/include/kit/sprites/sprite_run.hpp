@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 #include <kit/render/animation.hpp>
 #include <kit/render/frame_writer.hpp>
 #include <kit/render/image.hpp>

@@ -1,4 +1,4 @@
-#include <kit/render/obj_mesh.hpp>
+#include <kit/cloth/obj_mesh.hpp>
 
 #include <charconv>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <iostream>
 #include <sstream>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 
 namespace {
 /// A clock the test moves by hand [s].

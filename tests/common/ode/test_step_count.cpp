@@ -1,8 +1,8 @@
 // The steps of the run a user asks for (step_count.hpp).
 #include <kit_catch.hpp>
 
-#include <kit/app/step_count.hpp>
 #include <kit/base/usage.hpp>
+#include <kit/ode/step_count.hpp>
 
 TEST_CASE("a whole number of steps within the limit is the run's length") {
   CHECK(kit::require_whole_steps(1.0, 0.1, 1'000'000) == 10);

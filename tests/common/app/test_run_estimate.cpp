@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 #include <kit/base/usage.hpp>
 #include <kit/ode/step_budget.hpp>
 #include <kit/problems/van_der_pol_stiffness.hpp>

@@ -1,4 +1,4 @@
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 
 #include <algorithm>
 #include <chrono>

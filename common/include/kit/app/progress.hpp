@@ -8,7 +8,7 @@
 //
 // Work is counted in units proportional to time (steps of a method, not loop iterations of
 // wildly different cost). A chapter names the task (ChapterApp::section opens one per section)
-// and its total (kit/base/run_estimate.hpp's announce sets it from the estimate); the loops that do
+// and its total (kit/app/run_estimate.hpp's announce sets it from the estimate); the loops that do
 // the work report it with progress_add(steps): kit::advance does it every 2^16 steps.
 #include <cstdint>
 #include <functional>

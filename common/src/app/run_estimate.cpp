@@ -1,4 +1,4 @@
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 
 #include <unistd.h>
 
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include <kit/base/progress.hpp>
+#include <kit/app/progress.hpp>
 #include <kit/base/usage.hpp>
 
 namespace kit {

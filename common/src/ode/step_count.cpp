@@ -1,8 +1,8 @@
-#include <kit/app/step_count.hpp>
+#include <kit/ode/step_count.hpp>
 
 #include <fmt/format.h>
 
-#include <kit/base/run_estimate.hpp>
+#include <kit/app/run_estimate.hpp>
 #include <kit/base/usage.hpp>
 
 namespace kit {
