@@ -11,6 +11,7 @@
 #include <kit/app/look.hpp>
 #include <kit/app/progress.hpp>
 #include <kit/app/report.hpp>
+#include <kit/base/enum_names.hpp>
 #include <kit/ode/adaptive_run.hpp>
 #include <kit/ode/butcher_tableau.hpp>
 #include <kit/ode/embedded_run.hpp>
@@ -53,12 +54,21 @@ struct NamedRun {
   AdaptiveRun<Vec<N>> run;
 };
 
-/// One run in detail of `method`: "dopri5" (the kit's production DOPRI5), "cash-karp" or
-/// "bogacki-shampine" (the student's pair in the general driver).
+/// The methods --method runs in detail: the kit's production DOPRI5, or one of the student's
+/// pairs in the general driver. The display names are the tableaus' own (butcher_tableau.cpp).
+enum class DetailedMethod { dopri5, cash_karp, bogacki_shampine };
+inline constexpr auto detailed_method_names = enum_names<DetailedMethod>({
+    {DetailedMethod::dopri5, "dopri5", "DOPRI5"},
+    {DetailedMethod::cash_karp, "cash-karp", "Cash-Karp 5(4)"},
+    {DetailedMethod::bogacki_shampine, "bogacki-shampine", "Bogacki-Shampine 3(2)"},
+});
+static_assert(detailed_method_names.in_order());
+
+/// One run in detail of `method`.
 template <int N, class Rhs>
-NamedRun<N> detailed_run(const std::string& method, const Rhs& f, double t0, const Vec<N>& y0, double t1,
+NamedRun<N> detailed_run(DetailedMethod method, const Rhs& f, double t0, const Vec<N>& y0, double t1,
                          const EmbeddedOptions& options) {
-  if (method == "dopri5") {
+  if (method == DetailedMethod::dopri5) {
 #if KIT_PRODUCTION_DOPRI5
     Dopri5Options o;
     o.rtol = options.rtol, o.atol = options.atol, o.h0 = options.h0, o.max_steps = options.max_steps;
@@ -67,7 +77,7 @@ NamedRun<N> detailed_run(const std::string& method, const Rhs& f, double t0, con
     return {"DOPRI5 (ex 4.2, 4.3)", look::dopri5, student_embedded_run(f, dormand_prince(), t0, y0, t1, options)};
 #endif
   }
-  const bool ck = method == "cash-karp";
+  const bool ck = method == DetailedMethod::cash_karp;
   const ButcherTableau& tableau = ck ? cash_karp() : bogacki_shampine();
   return {tableau.name, ck ? look::cash_karp : look::bogacki_shampine,
           student_embedded_run(f, tableau, t0, y0, t1, options)};

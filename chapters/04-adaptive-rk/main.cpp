@@ -43,7 +43,7 @@ void tableaus_checked(kit::Report& report) {
 }
 
 // 2. One run in detail: where it steps, what it rejects, what it costs.
-Run one_run_in_detail(kit::Report& report, const kit::OrbitProblem& p, const std::string& method,
+Run one_run_in_detail(kit::Report& report, const kit::OrbitProblem& p, kit::DetailedMethod method,
                       const kit::EmbeddedOptions& o) {
   Run detail = kit::detailed_run(method, p.f, 0.0, p.y0, p.t_end, o);
   auto fields = kit::run_fields(detail.run, p.reference);
@@ -122,9 +122,9 @@ int main(int argc, char** argv) {
   kit::ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR,
                       "Chapter 4: adaptive Runge-Kutta against GSL and Boost.Odeint");
   app.add_choice("--problem", problem, "arenstorf (orbit, T = 17.07) or kepler (ellipse, T = 2π)",
-                 {"arenstorf", "kepler"});
+                 kit::orbit_names.flags());
   app.add_choice("--method", method, "the detailed run: dopri5 (production), cash-karp or bogacki-shampine "
-                 "(general driver)", {"dopri5", "cash-karp", "bogacki-shampine"});
+                 "(general driver)", kit::detailed_method_names.flags());
   app.add_real("--rtol", rtol, "relative tolerance of the detailed run", kit::between(1e-13, 1e-1));
   app.add_real("--atol", atol, "absolute tolerance of the detailed run, units of y",
                kit::between(1e-13, 1e-1));
@@ -135,10 +135,11 @@ int main(int argc, char** argv) {
   app.add_real("--mu", mu, "Van der Pol nonlinear damping μ (stiff when large)", kit::between(0.1, 1e4));
   return app.run(argc, argv, [&] {
     if (!(e_min < e_max)) throw kit::UsageError(fmt::format("--emin {} must be < --emax {}", e_min, e_max));
-    const kit::OrbitProblem p = kit::orbit_problem(problem, eccentricity);
+    const kit::OrbitProblem p = kit::orbit_problem(kit::orbit_names.parse(problem).value(), eccentricity);
+    const kit::DetailedMethod detailed = kit::detailed_method_names.parse(method).value();
     const kit::EmbeddedOptions options{rtol, atol, h0, 5'000'000};
     tableaus_checked(app.report());  // each section runs once its exercises (4.1–4.3) are written
-    const auto detail = app.section("one run", [&] { return one_run_in_detail(app.report(), p, method,
+    const auto detail = app.section("one run", [&] { return one_run_in_detail(app.report(), p, detailed,
                                                                               options); });
     app.section("step doubling", [&] { step_doubling_and_its_trap(app.report(), p, e_min, e_max, h0); });
     const auto curves = app.section("work-precision", [&] { return work_against_precision(app, p, h0); });

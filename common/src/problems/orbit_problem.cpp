@@ -1,7 +1,6 @@
 #include <kit/problems/orbit_problem.hpp>
 
 #include <cmath>
-#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -23,27 +22,29 @@ Trajectory<Vec4> OrbitProblem::path(int n) const {
   return reference_solution(f, 0.0, y0, times, tight());
 }
 
-OrbitProblem orbit_problem(const std::string& name, double eccentricity) {
+OrbitProblem orbit_problem(Orbit orbit, double eccentricity) {
   OrbitProblem p;
-  p.name = name;
-  if (name == "arenstorf") {
-    p.title = "Arenstorf orbit";
-    p.f = Arenstorf{};
-    p.y0 = Arenstorf::initial_state();
-    p.t_end = Arenstorf::period;
-    p.reference = reference_solution(p.f, 0.0, p.y0, {p.t_end}, tight()).u.back();
-    p.earth_and_moon = true;
-    p.length_unit = "Earth-Moon distances", p.time_unit = "months/2π";
-  } else if (name == "kepler") {
-    const Kepler kepler{eccentricity};
-    p.title = fmt::format("Kepler orbit (e = {})", eccentricity);
-    p.f = kepler;
-    p.y0 = kepler.initial_state();
-    p.t_end = 2 * M_PI;
-    p.reference = kepler.exact(p.t_end);
-    p.length_unit = "semi-major axes", p.time_unit = "periods/2π";
-  } else {
-    throw std::invalid_argument("unknown orbit problem: " + name);
+  p.name = orbit_names.flag(orbit);
+  switch (orbit) {
+    case Orbit::arenstorf:
+      p.title = orbit_names.display(orbit);
+      p.f = Arenstorf{};
+      p.y0 = Arenstorf::initial_state();
+      p.t_end = Arenstorf::period;
+      p.reference = reference_solution(p.f, 0.0, p.y0, {p.t_end}, tight()).u.back();
+      p.earth_and_moon = true;
+      p.length_unit = "Earth-Moon distances", p.time_unit = "months/2π";
+      break;
+    case Orbit::kepler: {
+      const Kepler kepler{eccentricity};
+      p.title = fmt::format("{} (e = {})", orbit_names.display(orbit), eccentricity);
+      p.f = kepler;
+      p.y0 = kepler.initial_state();
+      p.t_end = 2 * M_PI;
+      p.reference = kepler.exact(p.t_end);
+      p.length_unit = "semi-major axes", p.time_unit = "periods/2π";
+      break;
+    }
   }
   return p;
 }

@@ -167,6 +167,7 @@ TEST_CASE("chapter 4 writes its five figures, with no gnuplot warning") {
 
 TEST_CASE("chapter 4 answers bad input with exit 2, a message naming the flag, and no file") {
   kit::test::expect_usage_errors(binary, {{{"--rtol", "0"}, "--rtol"}, {{"--problem", "lorenz"}, "--problem"},
+                                          {{"--method", "DOPRI5"}, "--method"},
                                           {{"--emin", "1e-3", "--emax", "1e-4"}, "--emin"}, {{"--mu", "-1"}, "--mu"},
                                           {{"--eccentricity", "1"}, "--eccentricity"}, {{"--bogus"}, "--bogus"}});
 }

@@ -7,6 +7,7 @@
 
 #include <kit/base/enum_names.hpp>
 #include <kit/cloth/cloth_scene.hpp>
+#include <kit/problems/orbit_problem.hpp>
 #include <kit/sprites/particle_update.hpp>
 
 namespace {
@@ -49,4 +50,5 @@ TEST_CASE("the kit's tables keep the names its flags, scene files and summaries 
   CHECK(std::string(kit::display_name(kit::ClothIntegrator::midpoint)) == "midpoint (RK2)");
   CHECK(kit::cloth_integrator_names.parse("symplectic-euler") == kit::ClothIntegrator::symplectic_euler);
   CHECK(std::string(kit::spring_kind_name(kit::SpringKind::bend)) == "bend");
+  CHECK(kit::orbit_names.flags() == std::vector<std::string>{"arenstorf", "kepler"});
 }

@@ -6,10 +6,19 @@
 #include <string>
 #include <vector>
 
+#include <kit/base/enum_names.hpp>
 #include <kit/base/state.hpp>
 #include <kit/problems/adaptive_rk_models.hpp>
 
 namespace kit {
+
+/// The orbits --problem chooses from.
+enum class Orbit { arenstorf, kepler };
+inline constexpr auto orbit_names = enum_names<Orbit>({
+    {Orbit::arenstorf, "arenstorf", "Arenstorf orbit"},
+    {Orbit::kepler, "kepler", "Kepler orbit"},
+});
+static_assert(orbit_names.in_order());
 
 struct OrbitProblem {
   std::string name;                              ///< "arenstorf" or "kepler"
@@ -25,7 +34,7 @@ struct OrbitProblem {
   Trajectory<Vec4> path(int n) const;
 };
 
-/// "arenstorf", or "kepler" with eccentricity e in [0, 1).
-OrbitProblem orbit_problem(const std::string& name, double eccentricity);
+/// Arenstorf's orbit, or Kepler's with eccentricity e in [0, 1) (unused for Arenstorf).
+OrbitProblem orbit_problem(Orbit orbit, double eccentricity);
 
 }  // namespace kit
