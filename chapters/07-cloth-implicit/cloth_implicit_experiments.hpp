@@ -1,6 +1,6 @@
 #pragma once
-// Chapter 7's measurements of the implicit cloth (lecture, "Schéma implicite"): the student's
-// Jacobian and assembly checked, the stiffness an implicit step survives, the energy it removes,
+// Chapter 7's measurements of the implicit cloth (lecture, "Schéma implicite"): the stiffness an
+// implicit step survives, the energy it removes,
 // the speed/accuracy trade against the explicit methods, and what the linear solver costs.
 // Each experiment runs on a small "test sheet" made from the scene (test_sheet below), so the
 // chapter stays quick; counts are exact, times are what this machine measured.
@@ -16,31 +16,6 @@ namespace kit {
 /// and the trade), whatever --iterations says: it sets the scene run's, and 10 keeps these
 /// experiments' cost fixed.
 inline constexpr int experiment_iterations = 10;
-
-/// Ex 7.1 on random springs (lengths 0.5–2 times rest, K 1–1e4 N/m), from a fixed seed.
-struct JacobianCheck {
-  int springs = 0;
-  double finite_difference = 0;  ///< max ‖J − ∂f/∂x (central differences)‖ / ‖J‖, unclamped, all springs
-  double asymmetry = 0;          ///< max ‖J − Jᵀ‖ / ‖J‖
-  double clamped_lowest = 0;     ///< min eigenvalue of −J over compressed springs, clamped (≥ 0: definite)
-  double unclamped_lowest = 0;   ///< the same without the clamp (< 0: indefinite), in units of K
-};
-JacobianCheck check_stiffness_block(SpringStiffnessBlock block, int springs = 1000);
-
-/// Ex 7.2 against the kit's pattern scatter on the scene's sheet in a disturbed state, and the
-/// clamp's effect on a compressed sheet.
-struct AssemblyCheck {
-  long rows = 0, nonzeros = 0;
-  double matrix_difference = 0;  ///< max |A_ex − A_kit| / max |A_kit|
-  double rhs_difference = 0;     ///< max |b_ex − b_kit| / max |b_kit|
-  double asymmetry = 0;          ///< max |A − Aᵀ| / max |A|
-  bool definite = false;         ///< a sparse Cholesky (LLT) of the clamped A succeeds
-  bool unclamped_definite = true;  ///< the same on the compressed sheet without the clamp
-  PcgResult unclamped_solve;     ///< ex 7.3 on that indefinite system (negative curvature expected)
-  double triplet_seconds = 0;    ///< ex 7.2's assembly, per call [s]
-  double scatter_seconds = 0;    ///< the kit's pattern scatter, per call [s]
-};
-AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, ImplicitKernels kernels, double h);
 
 /// The experiments' sheet: `scene` at n nodes along its longer side, held at its pins (or at its
 /// two last-row corners when it has none), under gravity (−9.81 m/s² in y if it has none), with
@@ -135,10 +110,5 @@ struct Linearisation {
 Linearisation linearisation_error(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
                                   const ImplicitSettings& settings,
                                   double h, double stiffness = 1e4, double warm_up = 0.2);
-
-/// What chapter 7's scene run costs before it starts: its steps, a conservative cost of one
-/// (an implicit step: Jacobian, scatter and `cg_iterations` products with A), and the memory of
-/// the matrix, the state and the kept frames. Its fixed experiments (small sheets) are not in it.
-RunEstimate estimate_implicit_run(const ClothScene& scene, const ClothRunOptions& run, double cg_iterations = 100);
 
 }  // namespace kit

@@ -7,12 +7,14 @@
 
 #include <kit/app/chapter_app.hpp>
 
+#include "cloth_implicit_estimate.hpp"
 #include "cloth_implicit_figures.hpp"
 #include "cloth_implicit_flags.hpp"
 #include "cloth_implicit_tables.hpp"
 #include "cloth_implicit_wiring.hpp"
 #include "cloth_kernels.hpp"
 #include "cloth_output.hpp"
+#include "implicit_kernel_checks.hpp"
 
 namespace {
 using kit::ChapterApp, kit::ClothScene, kit::ClothKernels, kit::ImplicitKernels, kit::ImplicitSettings;
@@ -21,33 +23,14 @@ using Sizes = kit::ImplicitExperimentSizes;  // of the fixed experiments: the le
 // 1. "Linéarisation: f(x_n + Δx, v_n + Δv) = f_n + ∂f/∂x Δx + ∂f/∂v Δv": ex 7.1's block against
 //    central differences of the spring force, and what the clamp does to a compressed spring.
 void linearisation(ChapterApp& app, ImplicitKernels implicit) {
-  const kit::JacobianCheck c = kit::check_stiffness_block(implicit.stiffness_block);
-  app.report().say("jacobian", "1. Your ∂f_a/∂x_a on {n} random springs: {fd:.1e} from central differences "
-                   "of the force, symmetric to {asymmetry:.1e}. Compressed, the lowest eigenvalue of "
-                   "−∂f_a/∂x_a is {clamped:.3g} K clamped, {unclamped:.3g} K not (< 0: indefinite).\n\n",
-                   {{"n", long(c.springs)}, {"fd", c.finite_difference}, {"asymmetry", c.asymmetry},
-                    {"clamped", c.clamped_lowest}, {"unclamped", c.unclamped_lowest}});
+  kit::say_jacobian_check(app.report(), kit::check_stiffness_block(implicit.stiffness_block));
 }
 
 // 2. "Système linéaire à chaque pas de temps: A Δv = b" (ERRATA 14, symmetric form): ex 7.2
 //    against the kit's scatter into a pattern built once; ex 7.3 on an indefinite A.
 void linear_system(ChapterApp& app, const ClothScene& scene, const kit::Springs& springs,
                    ImplicitKernels implicit, double h) {
-  const kit::AssemblyCheck c = kit::check_assembly(scene, springs, implicit, h);
-  const kit::PcgResult& pcg = c.unclamped_solve;
-  app.report().say("system", "2. '{scene}' at h = {h:.4g} s: A is {rows}×{rows}, {nonzeros} nonzeros. "
-                   "Your ex 7.2 matches the kit's scatter to {matrix:.1e} (A) and {rhs:.1e} (b); A is "
-                   "symmetric to {asymmetry:.1e} and {definite}. Your triplets took {triplet_ms:.3g} ms, the "
-                   "scatter {scatter_ms:.3g} ms. Squeezed to 70% without the clamp, A is {unclamped}; your "
-                   "PCG {outcome} after {iterations} iterations.\n\n",
-                   {{"scene", scene.name}, {"h", h}, {"rows", c.rows}, {"nonzeros", c.nonzeros},
-                    {"matrix", c.matrix_difference}, {"rhs", c.rhs_difference}, {"asymmetry", c.asymmetry},
-                    {"definite", c.definite ? "positive definite" : "NOT positive definite"},
-                    {"triplet_ms", 1e3 * c.triplet_seconds}, {"scatter_ms", 1e3 * c.scatter_seconds},
-                    {"unclamped", c.unclamped_definite ? "still definite" : "indefinite"},
-                    {"outcome", pcg.negative_curvature ? "stopped on negative curvature (cᵀAc ≤ 0)"
-                                : pcg.converged        ? "converged" : "did not converge"},
-                    {"iterations", long(pcg.iterations)}, {"negative_curvature", pcg.negative_curvature}});
+  kit::say_assembly_check(app.report(), kit::check_assembly(scene, springs, implicit, h), scene.name, h);
 }
 
 // 3. "⇒ grands pas de temps": K from 1e1 to 1e7 N/m, symplectic Euler's largest stable step

@@ -24,6 +24,7 @@
 #include "cloth_implicit_experiments.hpp"
 #include "cloth_implicit_wiring.hpp"
 #include "cloth_kernels.hpp"
+#include "implicit_kernel_checks.hpp"
 #include "process.hpp"
 
 using nlohmann::json;
