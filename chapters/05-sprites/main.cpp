@@ -11,6 +11,7 @@
 #include <kit/app/chapter_app.hpp>
 #include <kit/base/measure.hpp>
 #include <kit/render/animation.hpp>
+#include <kit/sprites/sprite_estimate.hpp>
 
 #include "emission_check.hpp"
 #include "sprite_figures.hpp"

@@ -5,7 +5,6 @@
 #include <string>
 
 #include <kit/app/chapter_app.hpp>
-#include <kit/app/run_estimate.hpp>
 #include <kit/sprites/sprite_run.hpp>
 #include <kit/sprites/sprite_scene.hpp>
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <kit/app/chapter_app.hpp>
+#include <kit/cloth/cloth_estimate.hpp>
 #include <kit/cloth/spring_force_check.hpp>
 
 #include "cloth_figures.hpp"

@@ -8,10 +8,10 @@
 #include <fmt/format.h>
 
 #include <kit/app/chapter_app.hpp>
-#include <kit/app/run_estimate.hpp>
 
 #include <kit/rigid/rigid_renderer.hpp>
 
+#include "rigid_estimate.hpp"
 #include "rigid_figures.hpp"
 #include "rigid_flags.hpp"
 #include "rigid_kernels.hpp"

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include <kit/app/chapter_app.hpp>
-#include <kit/app/run_estimate.hpp>
 #include <kit/rigid/rigid_contact.hpp>
 #include <kit/rigid/rigid_stepper.hpp>
 
@@ -43,9 +42,6 @@ RigidSetup rigid_setup(const RigidFlags& flags);
 
 /// How long the scene's drop lasts [s]: the box comes to rest within it.
 inline constexpr double scene_drop_seconds = 3.0;
-
-/// What every run of chapter 8 costs with these flags, from its step counts (run_estimate.hpp).
-RunEstimate estimate_rigid_runs(const RigidSetup& setup);
 
 /// "--body t-handle, --integrator rk4, --dt 0.001 s, --t-end 10 s": the flags of an estimate.
 std::string describe_rigid_run(const RigidFlags& flags);

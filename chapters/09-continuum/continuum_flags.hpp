@@ -4,7 +4,6 @@
 #include <string>
 
 #include <kit/app/chapter_app.hpp>
-#include <kit/app/run_estimate.hpp>
 
 #include "continuum_experiments.hpp"
 
@@ -43,8 +42,6 @@ ContinuumSetup continuum_setup(const ContinuumFlags& flags);
 /// half a cell over the plane-stress wave speed √(E / (ρ (1 − ν²))) (a bound on the true limit),
 /// or 1 ms implicit.
 double scene_step(const ContinuumSetup& setup);
-/// What chapter 9's runs cost: the fixed experiments (about 10 s of element steps) and the scene.
-RunEstimate estimate_continuum_runs(const ContinuumSetup& setup);
 /// "--young 1e+09 Pa, --poisson 0.3, …, --frames 24": every flag an estimate depends on.
 std::string describe_continuum_run(const ContinuumFlags& flags);
 

@@ -8,6 +8,7 @@
 
 #include <kit/app/chapter_app.hpp>
 
+#include "continuum_estimate.hpp"
 #include "continuum_figures.hpp"
 #include "continuum_flags.hpp"
 #include "continuum_report.hpp"

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <kit/app/run_estimate.hpp>
 #include <kit/app/table.hpp>
 #include <kit/base/stopwatch.hpp>
 #include <kit/render/image.hpp>

@@ -5,6 +5,11 @@
 // taken as a conservative constant; never from timing the run itself. A run that cannot fit,
 // over max_seconds or max_bytes, is refused before it starts: a UsageError (exit 2) that names
 // the flags, their values and the estimate.
+//
+// Each estimate is a file of its own named for what it prices: cloth/cloth_estimate.hpp and
+// sprites/sprite_estimate.hpp for a model's runs, NN-name/*_estimate.hpp for a chapter's
+// (chapters 7, 8, 9), ode/step_budget.hpp for chapter 1's round-off sweep; Van der Pol's, a
+// calibration and one product, stays with its run (problems/van_der_pol_stiffness.hpp).
 #include <string>
 #include <string_view>
 

@@ -8,7 +8,6 @@
 #include <optional>
 #include <string>
 
-#include <kit/app/run_estimate.hpp>
 #include <kit/cloth/cloth_implicit_step.hpp>
 #include <kit/cloth/cloth_system.hpp>
 
@@ -70,12 +69,6 @@ struct StrainComparison {
 };
 StrainComparison compare_strain_limit(const ClothScene& scene, const Springs& springs, ClothKernels kernels,
                                       ClothRunOptions options, const ClothRecording& as_run);
-
-/// What chapter 6's runs of a scene cost before they start: the scene once with each of the
-/// four integrators and once more with the strain limit switched, in steps (progress counts one
-/// per step) and the memory of the state, springs and kept frames. `stage_ns` is a
-/// conservative cost of one spring in one force evaluation [ns].
-RunEstimate estimate_cloth_chapter(const ClothScene& scene, const ClothRunOptions& options, double stage_ns = 6.0);
 
 /// The deepest any node of x lies inside the scene's ground or spheres [m] (0: none inside),
 /// each sphere taken at contact_radius, where the contacts put the nodes.

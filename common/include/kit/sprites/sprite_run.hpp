@@ -1,8 +1,7 @@
 #pragma once
 // A whole sprite animation (chapter 5): the scene run frame by frame, its counts and a sample of
 // particle paths recorded, each frame rendered and written as a PNG when asked. What it would
-// cost is estimated from counts before it starts (Little's law: alive ≈ emission rate ×
-// lifetime), so a request that cannot fit is refused up front.
+// cost is estimated from its counts before it starts (sprite_estimate.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -10,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <kit/app/run_estimate.hpp>
 #include <kit/render/animation.hpp>
 #include <kit/render/frame_writer.hpp>
 #include <kit/render/image.hpp>
@@ -59,11 +57,6 @@ std::vector<double> emissions_per_frame(const SpriteScene& scene);
 /// Particles alive at steady state, by Little's law: Σ over emitters of particles a frame ×
 /// mean lifetime [s] × fps, at most max_particles.
 double expected_alive(const SpriteScene& scene, const SpriteRunOptions& options);
-/// The run's cost: frames as steps; time from the expected particle-steps, emissions, sprites,
-/// sprite pixels (each sprite's size seen from the camera's distance to its emitter) and frame
-/// pixels; memory from max_particles, the images kept and the textures.
-RunEstimate estimate_sprite_run(const SpriteScene& scene, const SpriteRunOptions& options);
-
 /// What a recording's frames become in `out` (finish_animation): contact_sheet.png (the kept
 /// frames, 4 a row), animation.mp4 and .gif (ffmpeg, when installed) and play.gp (a gnuplot
 /// player). Nothing when no frame was rendered (a run that diverged before its first frame).
