@@ -14,6 +14,7 @@
 #include "free_fall_euler.hpp"
 #include "free_fall_figures.hpp"
 #include "free_fall_flags.hpp"
+#include "free_fall_report.hpp"
 
 namespace {
 struct Setup {
@@ -29,10 +30,7 @@ struct Setup {
 void the_system(kit::Report& report, Setup& s) {
   s.n = kit::require_whole_steps(s.t_end, s.dt, 1'000'000);
   kit::require_measurable(s.fall, s.t_end, s.dt_min);
-  report.say("parameters", "Free fall: x0 = {x0} m, v0 = {v0} m/s, g = {g} m/s^2 (y axis up), dt = {dt} s, ",
-             {{"x0", s.fall.x0}, {"v0", s.fall.v0}, {"g", s.fall.g}, {"dt", s.dt}});
-  report.say("", "{steps} steps\nerr = x_method - x_exact; positive = above the exact parabola\n\n",
-             {{"steps", s.n}});
+  kit::say_free_fall(report, s.fall, s.dt, s.n);
 }
 
 // 2. The lecture's loop (explicit Euler on f), both matrix forms and GSL's rk8pd, against the
@@ -42,11 +40,7 @@ kit::EulerRuns loop_and_matrix_forms(kit::Report& report, const Setup& s) {
   const auto& expl = r.explicit_run();                            // matrix form (ex 1.2), else loop (ex 1.1)
   const auto gap_expl = kit::gap(s.fall, expl), gap_impl = kit::gap(s.fall, r.impl);
   const auto check = kit::check_euler_gaps(s.fall, s.dt, s.t_end, gap_expl, gap_impl);
-  auto table = report.table("samples", {{"k", "k"}, {"t [s]", "t", "{:.4f}"},
-      {"exact x [m]", "exact", "{:.6f}"}, {"explicit x", "explicit", "{:.6f}"},
-      {"implicit x", "implicit", "{:.6f}"}, {"explicit err", "explicit_error", "{:.4e}"},
-      {"implicit err", "implicit_error", "{:.4e}"}, {"k/2·Δt²·|g|", "predicted_error", "{:.4e}"},
-      {"match", "match", "check"}, {"", "explicit_loop"}, {"", "reference"}});
+  auto table = report.table("samples", kit::sample_columns());
   const std::size_t samples = std::size_t(s.n) + 1, every = std::max<std::size_t>(1, samples / 10);
   for (std::size_t k = 0; k < samples; ++k)  // about ten rows; "-" where a method waits for its exercise
     if (k % every == 0 || k + 1 == samples)
@@ -95,9 +89,7 @@ kit::Roundoff roundoff(kit::Report& report, const Setup& s) {
   if (!r.cost.empty())
     report.say("roundoff/sweep", "\nWhat accuracy costs (explicit Euler, double, T = {t_end} s): each digit "
                "costs 10x the steps\n", plan);
-  auto cost = report.table("cost", {{"Δt [s]", "dt", "{:.1e}"}, {"steps", "steps"},
-      {"RHS evals", "rhs_evals"}, {"|error| [m]", "error", "{:.2e}"}, {"time [s]", "seconds", "{:.1e}"},
-      {"ns/step", "ns_per_step", "{:.2f}"}});
+  auto cost = report.table("cost", kit::cost_columns());
   for (std::size_t i = 0; i < r.cost.size(); ++i) {  // every 4th run and the finest printed, all in the JSON
     const auto& c = r.cost[i];
     cost.row({c.dt, c.steps, c.rhs_evals, c.error, c.seconds, 1e9 * c.seconds / double(c.steps)},
@@ -105,9 +97,7 @@ kit::Roundoff roundoff(kit::Report& report, const Setup& s) {
   }
   if (!r.cost.empty()) cost.print();
   report.print("\nWhere round-off wins (the error falls with dt, then rises again below the best dt):\n");
-  auto wins = report.table("roundoff", {{"curve", ""}, {"best Δt [s]", "best_dt", "{:.3g}"},
-      {"|error| [m]", "best_error", "{:.3g}"}, {"smallest Δt [s]", "smallest_dt", "{:.3g}"},
-      {"|error| there [m]", "smallest_dt_error", "{:.3g}"}});
+  auto wins = report.table("roundoff", kit::roundoff_columns());
   for (auto [key, curve, sweep] : {std::tuple{"explicit_double", "explicit, double", &r.doubles},
                                    {"explicit_float", "explicit, float", &r.floats},
                                    {"implicit_float", "implicit, float", &r.floats_implicit}}) {

@@ -6,6 +6,7 @@
 #include <kit/ode/step_count.hpp>
 #include "spring_figures.hpp"
 #include "spring_flags.hpp"
+#include "spring_report.hpp"
 
 namespace {
 using kit::Scheme;
@@ -25,18 +26,7 @@ struct Setup {
 void the_system(kit::Report& report, Setup& s) {
   s.n = kit::require_whole_steps(s.t_end, s.dt, 1'000'000);
   kit::require_motion(s.spring, s.u0);
-  const double w = s.spring.omega(), zeta = s.spring.damping_ratio();
-  const auto [l1, l2] = s.spring.eigenvalues();  // {0} below: fmt cannot name the key "rest-length"
-  report.say("parameters", "Spring: m = {mass} kg, K = {stiffness} N/m, mu = {damping} N·s/m, L0 = {0} m; "
-             "u0 = ({x0} m, {v0} m/s); dt = {dt} s\n", {{"rest-length", s.spring.rest_length},
-             {"mass", s.spring.mass}, {"stiffness", s.spring.stiffness}, {"damping", s.spring.damping},
-             {"x0", s.u0[0]}, {"v0", s.u0[1]}, {"dt", s.dt}});
-  report.say("", "omega = {omega:.6g} rad/s, zeta = {zeta:.4g} ({regime}), period 2π/ω = {period:.4g} s, so "
-             "omega·dt = {omega_dt:.4g}\neigenvalues of A: {lambda1_re:.4g}{lambda1_im:+.4g}i and "
-             "{lambda2_re:.4g}{lambda2_im:+.4g}i [1/s]\n\n", {{"omega", w}, {"zeta", zeta},
-             {"period", 2 * M_PI / w}, {"regime", kit::damping_regime(zeta)}, {"omega_dt", s.h()},
-             {"steps", s.n}, {"lambda1_re", l1.real()}, {"lambda1_im", l1.imag()}, {"lambda2_re", l2.real()},
-             {"lambda2_im", l2.imag()}});
+  kit::say_spring_system(report, s.spring, s.u0, s.dt, s.n);
   s.written = kit::written_parts(report, s.spring, s.u0, s.dt);  // names each part still waiting
 }
 
@@ -46,10 +36,7 @@ kit::SpringRuns every_scheme(kit::ChapterApp& app, const Setup& s) {
   const auto runs = kit::run_every_scheme(s.spring, s.u0, s.dt, s.n, s.written.schemes);
   const double zeta = s.spring.damping_ratio(), exact = kit::spring_motion(s.spring, s.u0, s.t_end)[0];
   const std::string factor = kit::factor_format(kit::largest_factor(runs, s.h(), zeta, s.written.factors));
-  auto table = app.report().table("runs", {{"scheme", ""}, {"x(T) [m]", "x_end", "{:.6f}"},
-      {"|x(T) - exact|", "error_end", "{:.2e}"}, {"E(T)/E(0)", "energy_ratio", "{:.3e}"},
-      {"growth/step", "growth_per_step", factor}, {"spectral radius", "spectral_radius", factor},
-      {"status", "status"}, {"", "max_energy_drift"}, {"", "steps"}, {"", "diverged"}});
+  auto table = app.report().table("runs", kit::run_columns(factor));
   for (const auto& [scheme, run] : runs) {
     const std::string status = run.diverged() ? run.trajectory.divergence->describe() : "finished";
     if (run.diverged()) app.diverged(kit::name(scheme), status);
@@ -73,10 +60,7 @@ kit::SpringRuns every_scheme(kit::ChapterApp& app, const Setup& s) {
 // 3. Critical steps ("Conditionnellement stable"), measured by bisection beside theory.
 void critical_steps(kit::Report& report, const Setup& s) {
   report.print("\nCritical steps (bisection on long runs; above them the motion grows without bound):\n");
-  auto table = report.table("critical", {{"scheme", ""}, {"μ [N·s/m]", "damping", "{:.4g}"},
-      {"ζ", "zeta", "{:.3g}"}, {"measured Δt [s]", "measured", "{:.5e}"},
-      {"from R(z) [s]", "analytic", "{:.5e}"}, {"formula", ""}, {"closed form [s]", "closed_form", "{:.5e}"},
-      {"measured vs closed form", "relative_difference", "{:+.2e}"}});
+  auto table = report.table("critical", kit::critical_columns());
   for (const auto& c : kit::textbook_critical_cases(s.spring, s.written)) {
     const kit::Critical dt = kit::critical_step(c.scheme, c.spring);
     table.row(kit::key(c.scheme), {std::string(kit::name(c.scheme)), c.spring.damping,
@@ -97,9 +81,7 @@ void critical_steps(kit::Report& report, const Setup& s) {
 void implicit_damping(kit::Report& report, const Setup& s) {
   report.print("\nImplicit Euler damps the motion away as ω·Δt grows (undamped spring; -: a period of the "
                "motion is shorter than one step):\n");
-  auto table = report.table("implicit_damping", {{"ω·Δt", "omega_dt", "{:.2f}"},
-      {"amplitude kept per step", "per_step", "{:.7e}"}, {"1/sqrt(1+ω²Δt²)", "predicted_per_step", "{:.7e}"},
-      {"per period of the motion", "per_period", "{:.3e}"}, {"predicted", "predicted_per_period", "{:.3e}"}});
+  auto table = report.table("implicit_damping", kit::implicit_damping_columns());
   for (double h : {0.01, 0.1, 0.5, 1.0, 2.0, 10.0, 100.0}) {
     const double kept = kit::implicit_amplitude_per_step(s.spring, s.u0, h), predicted = 1 / std::hypot(1, h);
     table.row({h, kept, predicted, kit::per_period(kept, h), kit::per_period(predicted, h)});
@@ -109,8 +91,8 @@ void implicit_damping(kit::Report& report, const Setup& s) {
 
 // 5. Extremes ("Ressorts raides: K grand ⇒ stiff"): what 1000 steps of Δt do to each scheme.
 void stiff_springs(kit::Report& report, const Setup& s) {
-  auto amplitudes = report.table("extremes_amplitude", kit::scheme_columns({{"spring", ""},
-      {"ζ", "zeta", "{:.1f}"}, {"ω·Δt", "omega_dt", "{:.2e}"}}, s.written.schemes, "×{:.3g}"));
+  auto amplitudes = report.table("extremes_amplitude",
+                                 kit::scheme_columns(kit::extremes_columns(), s.written.schemes, "×{:.3g}"));
   auto divergences = report.table("extremes", kit::scheme_columns({{"spring", ""}}, s.written.schemes));
   for (const auto& row : kit::measure_extremes(s.spring, s.u0, s.dt, 1000, s.written.schemes)) {
     amplitudes.row(row.label, row.amplitudes);

@@ -18,6 +18,7 @@
 
 #include "explicit_euler.hpp"
 #include "midpoint.hpp"
+#include "rk2_report.hpp"
 #include "scheme_figures.hpp"
 #include "spring_flags.hpp"
 #include "spring_steppers.hpp"
@@ -51,17 +52,8 @@ Sweeps orders_on_the_spring(kit::ChapterApp& app, const kit::Spring& spring, con
                             const kit::SweepHorizon& horizon, const std::vector<Scheme>& schemes) {
   const kit::ProgressTask progress("orders");  // the progress line on a terminal
   const double w = spring.omega();
-  app.report().say("spring", "Spring: m = {mass} kg, K = {stiffness} N/m, mu = {damping} N·s/m, "
-                   "omega = {omega:.4g} rad/s; errors |x_N - x(T)| at T = {t:.4g} s\n",
-                   {{"mass", spring.mass}, {"stiffness", spring.stiffness}, {"damping", spring.damping},
-                    {"omega", w}, {"t", horizon.t}, {"adapted", horizon.adapted}});
-  if (horizon.adapted)
-    app.report().say("spring", "(--t-end {t_end} s gives omega·T = {omega_t:.3g}; a decade of omega·dt <= "
-                     "min(0.05, 1/(omega·T)) in 1e6 steps needs omega·T <= {omega_t_max:.3g}.)\n",
-                     {{"t_end", t_end}, {"omega_t", w * t_end}, {"omega_t_max", w * horizon.t}});
-  auto orders = app.report().table("orders", {{"scheme", "scheme"},
-      {"expected order", "expected"}, {"fitted order", "fitted", "{:.3f}"}, {"points fitted", "points"},
-      {"evals/step", "evaluations_per_step"}, {"best error [m]", "best_error", "{:.1e}"}});
+  kit::say_spring_horizon(app.report(), spring, horizon, t_end);
+  auto orders = app.report().table("orders", kit::order_columns());
   Sweeps sweeps;
   for (Scheme s : schemes) {
     const auto error_at = [&](long n) {
@@ -85,8 +77,7 @@ Drifts energy_over_periods(kit::ChapterApp& app, const kit::Spring& spring, cons
   const double dt = 0.1 / spring.omega();
   app.report().say("energy_run", "\nEnergy over {periods} periods with omega·dt = {omega_dt} "
                    "({steps} steps):\n", {{"periods", periods}, {"omega_dt", 0.1}, {"steps", steps}});
-  auto table = app.report().table("energy", {{"scheme", "scheme"}, {"max |E/E0 - 1|", "max_drift", "{:.2e}"},
-      {"E/E0 at the end", "final_ratio", "{:.3e}"}, {"diverged at t [s]", "diverged_at", "{:.4g}"}});
+  auto table = app.report().table("energy", kit::energy_columns());
   Drifts drifts;
   const auto energy = [&](const Vec2& u) { return spring.energy(u); };
   for (Scheme s : schemes) {
@@ -102,10 +93,7 @@ void what_accuracy_costs(kit::ChapterApp& app, const Sweeps& sweeps) {
   app.report().print("\nRight-hand-side evaluations needed for an error at T (implicit Euler: a linear "
                      "solve counts as one;\npast 1e9 steps round-off wins over truncation in double, "
                      "chapter 1):\n");
-  auto cost = app.report().table("evaluations_needed", {{"scheme", "scheme"},
-      {"error at T [m]", "target", "{:.0e}"}, {"measured", "measured"},
-      {"extrapolated", "extrapolation", "~{:.0e}"}, {"within 1e9 steps", "reachable"},
-      {"", "evaluations"}, {"", "extrapolated"}});
+  auto cost = app.report().table("evaluations_needed", kit::evaluations_columns());
   for (const auto& [s, sweep] : sweeps) {
     for (double target : targets) {
       const auto n = kit::evaluations_needed(sweep, kit::evaluations_per_step(s), target);

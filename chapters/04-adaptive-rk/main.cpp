@@ -17,6 +17,7 @@
 #include <kit/problems/van_der_pol_stiffness.hpp>
 
 #include "adaptive_figures.hpp"
+#include "adaptive_report.hpp"
 #include "adaptive_rk_methods.hpp"
 #include "work_precision_report.hpp"
 
@@ -27,10 +28,7 @@ using Curves = std::vector<kit::WorkCurve>;
 // 1. The tableaus, checked in long double: row sums and order conditions (ERRATA items 8–9).
 void tableaus_checked(kit::Report& report) {
   report.print("Butcher tableaus, checked in long double (order conditions up to order 5):\n");
-  auto table = report.table("tableaus", {{"tableau", "name"}, {"stages", "stages"}, {"FSAL", "fsal"},
-      {"max |c - row sum|", "row_sum_defect", "{:.1e}"}, {"order of b", "order"},
-      {"order of b̂", "embedded_order"}, {"autonomous: b", "order_autonomous"},
-      {"autonomous: b̂", "embedded_order_autonomous"}});
+  auto table = report.table("tableaus", kit::tableau_columns());
   using kit::Nodes;
   for (const auto* t : {&kit::cash_karp(), &kit::cash_karp_as_printed(), &kit::dormand_prince(),
                         &kit::bogacki_shampine()}) {
@@ -92,16 +90,7 @@ Curves work_against_precision(kit::ChapterApp& app, const kit::OrbitProblem& p, 
 // 5. Stiffness: Van der Pol at large μ, where stability, not accuracy, holds the step down.
 kit::StiffnessRun stiffness(kit::Report& report, double mu) {
   kit::StiffnessRun s = kit::van_der_pol_stiffness(report, mu, kit::chapter_dopri5());  // estimate first
-  const std::vector<kit::Field> fields = kit::report_fields(s);
-  report.say("van_der_pol", s.adapted
-      ? "\nVan der Pol, mu = {mu}: two periods (t = {two_periods:.4g}) would take about "
-        "{predicted_steps:.2g} steps; DOPRI5's\nbudget of {budget} ran out at t = {horizon:.4g}, so what "
-        "follows is over [0, {horizon:.4g}].\n"
-      : "\nVan der Pol, mu = {mu}, over {horizon:.4g} (two periods): ", fields);
-  report.say("van_der_pol", "DOPRI5 took {accepted} steps and rejected {rejected}; median step "
-             "{median_step:.3g}.\nOn the slow branches the median of h·|λ_stiff| = h·mu·(x² - 1) is "
-             "{median_h_lambda:.3g}, against DOPRI5's stability boundary\non the negative real axis, "
-             "{boundary}: {verdict}.\n", fields);
+  kit::say_van_der_pol(report, s);
   return s;
 }
 

@@ -17,6 +17,7 @@
 #include "sprite_figures.hpp"
 #include "sprite_flags.hpp"
 #include "sprite_kernels.hpp"
+#include "sprite_report.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -30,9 +31,7 @@ void falls_under_gravity(kit::ChapterApp& app, const kit::SpriteScene& scene,
   app.report().say("trade", "1. The mean particle of '{scene}' over its life of {t:.3g} s (k = {k} 1/s), "
                    "against the closed form x(t) of gravity plus drag:\n",
                    {{"scene", scene.name}, {"t", mean.t_end}, {"k", mean.drag}});
-  auto table = app.report().table("integrators", {{"integrator", "integrator"}, {"order", "order"},
-      {"fitted order", "fitted_order", "{:.3f}"}, {"error at 1/fps [m]", "error_at_fps", "{:.2e}"},
-      {"on screen [px]", "pixels_at_fps", "{:.2e}"}});
+  auto table = app.report().table("integrators", kit::integrator_columns());
   kit::TradeCurves curves;
   for (kit::Integrator i : kit::all_integrators) {
     const auto& runs = curves[i] = kit::trade_runs(mean, i, kit::trade_steps());
@@ -56,9 +55,7 @@ void emits(kit::ChapterApp& app, const kit::SpriteScene& scene, std::uint64_t se
   const auto draws = kit::measure_emission(scene.emitters[0], &kit::sample_particle, seed);
   app.report().print(fmt::format("2. Emitter '{}', 20000 particles drawn by your sample_particle:\n",
                                  scene.emitters[0].name));
-  auto table = app.report().table("emission", {{"attribute", "attribute"}, {"scene mean", "mean", "{:.4g}"},
-      {"± variance", "variance", "{:.4g}"}, {"drawn mean", "drawn_mean", "{:.4g}"},
-      {"drawn ± sqrt(3 var)", "drawn_half_width", "{:.4g}"}});
+  auto table = app.report().table("emission", kit::emission_columns());
   for (const auto& a : draws) table.row({a.name, a.mean, a.half_width, a.drawn_mean, a.drawn_half_width});
   table.print();
   app.report().print("\n");
@@ -69,20 +66,7 @@ void emits(kit::ChapterApp& app, const kit::SpriteScene& scene, std::uint64_t se
 kit::SpriteRecording lives_and_dies(kit::ChapterApp& app, const kit::SpriteScene& scene,
                                     const kit::SpriteRunOptions& run) {
   const kit::SpriteRecording rec = kit::run_sprite_scene(scene, run, kit::student_kernels(scene.emitters[0]));
-  const kit::SpriteTotals& t = rec.totals;
-  app.report().say("counts", "3. {frames} frames of '{scene}' with {integrator}: emitted {emitted}, "
-                   "dead {dead}, alive {alive} = emitted - dead; at most {peak} alive, {dropped} not emitted "
-                   "(--max-particles {max}).\n", {{"frames", long(rec.frames.size())}, {"scene", scene.name},
-                   {"integrator", std::string(kit::display_name(run.integrator))}, {"emitted", t.emitted},
-                   {"dead", t.dead}, {"alive", t.alive()}, {"peak", rec.peak_alive}, {"dropped", t.dropped},
-                   {"max", run.max_particles}});
-  const kit::UpdateWork& w = rec.work;
-  app.report().say("work", "Work in particle-steps: motion {steps}, gravity {gravity}, drag {drag}, colour "
-                   "{colour}, alpha {alpha}, size {size}, opacity tests {alpha_checks}, region tests "
-                   "{region_checks}: a term the scene does not list costs nothing.\n",
-                   {{"steps", w.particle_steps}, {"gravity", w.gravity}, {"drag", w.drag},
-                    {"colour", w.colour}, {"alpha", w.alpha}, {"size", w.size},
-                    {"alpha_checks", w.alpha_checks}, {"region_checks", w.region_checks}});
+  kit::say_sprite_counts(app.report(), rec, scene.name, run);
   if (rec.diverged_at >= 0)
     app.diverged("scene", fmt::format("a position became infinite at frame {} (Δt = 1/{} s); the frames "
                                       "so far are kept", rec.diverged_at, run.fps));
@@ -94,11 +78,7 @@ kit::SpriteRecording lives_and_dies(kit::ChapterApp& app, const kit::SpriteScene
 void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
                       const kit::SpriteRunOptions& run) {
   const fs::path out = app.options().out_dir;
-  app.report().say("frames", "4. {count} frames ({width}x{height}) in {dir}; {drawn} sprites drawn, "
-                   "{culled} culled, {pixels} pixels blended.\n", {{"count", long(rec.rendered.files.size())},
-                   {"width", long(run.width)}, {"height", long(run.height)}, {"dir", run.frame_dir.string()},
-                   {"drawn", rec.render.sprites_drawn}, {"culled", rec.render.sprites_culled},
-                   {"pixels", rec.render.pixels_blended}});
+  kit::say_sprite_frames(app.report(), rec, run);
   const auto made = kit::write_animation(rec, run, out);
   if (!made) {
     app.report().print("No frame was rendered (the run diverged first): no contact sheet, no animation.\n");

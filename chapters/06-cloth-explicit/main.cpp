@@ -15,6 +15,7 @@
 #include "cloth_flags.hpp"
 #include "cloth_kernels.hpp"
 #include "cloth_output.hpp"
+#include "cloth_report.hpp"
 #include "cloth_spring_force.hpp"
 #include "cloth_tables.hpp"
 
@@ -25,26 +26,13 @@ using kit::ChapterApp, kit::ClothScene, kit::ClothKernels, kit::ClothIntegrator,
 // 1. "En 3D: F = K (L0 − |x − x0|) (x − x0)/|x − x0|": ex 6.1 on random springs.
 void spring_in_3d(ChapterApp& app) {
   const kit::SpringForceCheck c = kit::check_spring_force(&kit::spring_force);
-  app.report().say("spring", "1. Your spring force on {n} random springs: F_a + F_b = {third:.1e} |F| "
-                   "(Newton's third law); F + ∇E = {gradient:.1e} |F| (it derives from ½K(l − L0)²); "
-                   "a pair moving together is damped by {rigid:.1e} μ|v|; a stretch rate w by μw to "
-                   "{stretch:.1e}.\n\n",
-                   {{"n", long(c.springs)}, {"third", c.third_law}, {"gradient", c.energy_gradient},
-                    {"rigid", c.rigid_damping}, {"stretch", c.stretch_damping}});
+  kit::say_spring_force_check(app.report(), c);
 }
 
 // 2. "Ressorts couplés: structural, shear, bend": ex 6.2 builds the scene's network.
 kit::Springs coupled_springs(ChapterApp& app, const ClothScene& scene, ClothKernels kernels) {
   kit::Springs springs = kernels.build_springs(scene.grid, scene.springs);
-  const auto count = [&](kit::SpringKind kind) { return springs.count(kind); };
-  app.report().say("springs", "2. '{scene}': {nodes} nodes; your ex 6.2 built {structural} structural, "
-                   "{shear} shear and {bend} bend springs ({layout} neighbours): {total} of the {expected} "
-                   "expected.\n\n", {{"scene", scene.name}, {"nodes", scene.grid.nodes()},
-                    {"structural", count(kit::SpringKind::structural)},
-                    {"shear", count(kit::SpringKind::shear)},
-                    {"bend", count(kit::SpringKind::bend)}, {"total", long(springs.size())},
-                    {"layout", scene.springs.bend_layout == kit::BendLayout::four ? 4L : 8L},
-                    {"expected", kit::spring_count(scene.grid.nx, scene.grid.ny, scene.springs)}});
+  kit::say_coupled_springs(app.report(), scene, springs);
   return springs;
 }
 
@@ -86,10 +74,7 @@ kit::ClothRuns explicit_loop(ChapterApp& app, const ClothScene& scene, const kit
 void super_elastic(ChapterApp& app, const ClothScene& scene, const kit::Springs& springs,
                    ClothKernels kernels, const kit::ClothRunOptions& run, const ClothRecording& as_run) {
   const auto c = kit::compare_strain_limit(scene, springs, kernels, run, as_run);
-  app.report().say("strain", "5. Peak stretch {free:.3g}% with springs alone, {limited:.3g}% with Provot's "
-                   "limit of {max:.3g}% ({fixes} springs pulled back).\n",
-                   {{"free", 100 * c.free.peak_strain}, {"limited", 100 * c.limited.peak_strain},
-                    {"max", 100 * c.max_strain}, {"fixes", c.limited.work.strain_corrections}});
+  kit::say_strain_limit(app.report(), c);
   app.figure(kit::cloth_strain_figure(c.free, c.limited, c.max_strain, scene.name));
 }
 

@@ -98,11 +98,7 @@ void scene_runs(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernel
   for (const auto& [what, at] : {std::pair{"tumbling", tumble.diverged_at}, std::pair{"dropped", drop.diverged_at}})
     if (at >= 0)
       app.diverged(fmt::format("{} ({})", what, kit::flag_name(s.integrator)), fmt::format("at t = {:.4g} s", at));
-  app.report().say("scene", "\n6. With {integrator} at h = {h:.3g} s: the {body} tumbles {t:g} s and flips {flips} "
-                   "times, |ΔE|/E ≤ {energy:.2g}; the box dropped tilted 30° bounces {bounces} times.\n",
-                   {{"integrator", kit::display_name(s.integrator)}, {"h", s.dt}, {"body", s.shape.name},
-                    {"t", s.t_end}, {"flips", long(tumble.flip_times.size())}, {"energy", tumble.max_energy_drift},
-                    {"bounces", long(drop.bounces)}});
+  kit::print_scene_runs(app.report(), s.integrator, s.dt, s.shape, s.t_end, tumble, drop);
   if (app.options().no_plot || s.frames == 0) return;
   for (const auto& [stem, shape, frames, seconds] : {std::tuple{s.shape.name, s.shape, tumble.frames, s.t_end},
                                                      std::tuple{std::string("drop"), box, drop.frames,

@@ -118,4 +118,13 @@ void print_drop(Report& report, const std::string& section, const std::string& w
   report.store(section, {{"total", end.total()}, {"start_total", run.samples.front().total()}});
 }
 
+void print_scene_runs(Report& report, RotationIntegrator integrator, double h, const RigidShape& shape,
+                      double t_end, const RotationRun& tumble, const DropRun& drop) {
+  report.say("scene", "\n6. With {integrator} at h = {h:.3g} s: the {body} tumbles {t:g} s and flips {flips} "
+             "times, |ΔE|/E ≤ {energy:.2g}; the box dropped tilted 30° bounces {bounces} times.\n",
+             {{"integrator", display_name(integrator)}, {"h", h}, {"body", shape.name},
+              {"t", t_end}, {"flips", long(tumble.flip_times.size())}, {"energy", tumble.max_energy_drift},
+              {"bounces", long(drop.bounces)}});
+}
+
 }  // namespace kit

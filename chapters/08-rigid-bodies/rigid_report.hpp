@@ -2,6 +2,7 @@
 // What chapter 8 prints: which integrators can run (the lecture's wait for their exercises), the
 // drift table, the flips against the step, the axes, the trade and the drops. Every number goes
 // through the report layer, so the text and the --json summary agree.
+#include <string>
 #include <vector>
 
 #include <kit/app/report.hpp>
@@ -35,5 +36,10 @@ void print_trade(Report& report, const RotationTrade& trade);
 /// summary[section]: bounces, the first rise against e², the deepest corner, friction, energy.
 void print_drop(Report& report, const std::string& section, const std::string& what, const DropRun& run,
                 const GroundContact& contact, double drop_height, double resting);
+
+/// summary["scene"]: the chosen integrator's tumble (its flips and energy drift) and its drop of
+/// the tilted box (its bounces), at step h [s] over t_end [s].
+void print_scene_runs(Report& report, RotationIntegrator integrator, double h, const RigidShape& shape,
+                      double t_end, const RotationRun& tumble, const DropRun& drop);
 
 }  // namespace kit
