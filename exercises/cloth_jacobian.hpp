@@ -15,7 +15,7 @@ namespace kit {
 /// K [N/m]; (1 − L0/l) clamped to ≥ 0 when `clamp`. A spring of zero length has no direction:
 /// its block is zero.
 inline Mat3 spring_stiffness_block(const Vec3& xa, const Vec3& xb, double rest, double stiffness,
-                                      bool clamp) {
+                                   bool clamp) {
   // TODO(ex 7.1): x̂ = (xa − xb)/l; P = x̂x̂ᵀ; c = 1 − L0/l (max(0, c) if clamp); −K [P + c (I − P)]
   throw kit::NotImplemented("ex 7.1", "cloth_jacobian.hpp");
 }

@@ -16,8 +16,8 @@
 namespace kit {
 
 /// Solves A x = b under the per-node filters; see PcgResult for what it reports.
-inline PcgResult filtered_pcg(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Mat3>& filters,
-                              double tolerance, int max_iterations) {
+inline PcgResult filtered_pcg(const SparseMatrix& A, const Eigen::VectorXd& b,
+                              const std::vector<Mat3>& filters, double tolerance, int max_iterations) {
   // TODO(ex 7.3): filter = S_i on each node's 3 entries; P⁻¹ = 1/diag(A); loop while ‖r‖ > tol ‖S b‖; stop on cᵀq ≤ 0
   throw kit::NotImplemented("ex 7.3", "cloth_pcg.hpp");
 }

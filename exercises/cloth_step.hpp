@@ -18,7 +18,8 @@ namespace kit {
 /// indices of the nodes held still. f is scratch space of the same shape as x (no allocation).
 template <class Forces>
 void symplectic_cloth_step(NodeArray& x, NodeArray& v, const Eigen::VectorXd& masses,
-                           const std::vector<std::int32_t>& pins, const Forces& forces, NodeArray& f, double dt) {
+                           const std::vector<std::int32_t>& pins, const Forces& forces, NodeArray& f,
+                           double dt) {
   // TODO(ex 6.3): f from forces(x, v, f); v += dt f/m row by row; pinned rows of v back to zero; then x += dt v
   throw kit::NotImplemented("ex 6.3", "cloth_step.hpp");
 }

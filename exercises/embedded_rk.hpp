@@ -14,8 +14,8 @@ namespace kit {
 /// `k1` = f(t, y) is passed in, so that an FSAL pair reuses its last stage as the next k_1.
 /// Shapes: y, k1 and f(t, y) are vectors of one size; t, h in s.
 template <class Rhs, class State>
-EmbeddedStep<State> embedded_step(const Rhs& f, const ButcherTableau& tableau, double t, const State& y, double h,
-                                  const State& k1) {
+EmbeddedStep<State> embedded_step(const Rhs& f, const ButcherTableau& tableau, double t, const State& y,
+                                  double h, const State& k1) {
   EmbeddedStep<State> out;
   // TODO(ex 4.2): compute each stage from the earlier ones (row i of A), then combine them with b and with b − b̂
   throw kit::NotImplemented("ex 4.2", "embedded_rk.hpp");

@@ -21,13 +21,13 @@
 namespace kit {
 
 struct StepDoubling {
-  double e_min = 1e-8;      ///< below this, double Δt (units of u)
-  double e_max = 1e-6;      ///< above this, halve Δt and retry (units of u)
-  double dt0 = 1e-3;        ///< first trial step [s]
-  double dt_min = 1e-12;    ///< below this the run stops: step_too_small [s]
-  int max_retries = 200;    ///< retries of one step before the run reports `trapped`
+  double e_min = 1e-8;    ///< below this, double Δt (units of u)
+  double e_max = 1e-6;    ///< above this, halve Δt and retry (units of u)
+  double dt0 = 1e-3;      ///< first trial step [s]
+  double dt_min = 1e-12;  ///< below this the run stops: step_too_small [s]
+  int max_retries = 200;  ///< retries of one step before the run reports `trapped`
   long max_steps = 10'000'000;
-  bool guarded = true;      ///< false: the lecture's loop exactly as written (plus the retry bound)
+  bool guarded = true;  ///< false: the lecture's loop exactly as written (plus the retry bound)
 };
 
 /// Integrates with `step(t, u, dt) → u_next` (any one-step method) from (t0, u0) to t_end.

@@ -17,11 +17,16 @@ inline std::complex<double> amplification_factor(Scheme scheme, std::complex<dou
     throw std::invalid_argument("symplectic Euler has no scalar amplification factor");
   // BEGIN SOLUTION ex 2.4: apply one step of each scheme to y' = λy, y_k = 1, and read off y_{k+1} in terms of z = λΔt
   switch (scheme) {
-    case Scheme::explicit_euler: return 1.0 + z;
-    case Scheme::implicit_euler: return 1.0 / (1.0 - z);
-    case Scheme::midpoint: return 1.0 + z + z * z / 2.0;
-    case Scheme::rk4: return 1.0 + z * (1.0 + z / 2.0 * (1.0 + z / 3.0 * (1.0 + z / 4.0)));
-    default: break;
+    case Scheme::explicit_euler:
+      return 1.0 + z;
+    case Scheme::implicit_euler:
+      return 1.0 / (1.0 - z);
+    case Scheme::midpoint:
+      return 1.0 + z + z * z / 2.0;
+    case Scheme::rk4:
+      return 1.0 + z * (1.0 + z / 2.0 * (1.0 + z / 3.0 * (1.0 + z / 4.0)));
+    default:
+      break;
   }
   // END SOLUTION
   throw std::invalid_argument("unknown scheme");

@@ -13,7 +13,7 @@ namespace kit {
 /// `rest` [m], stiffness family.stiffness [N/m] and damping family.damping [N·s/m]. A spring of
 /// zero length has no direction: its force is zero.
 inline Vec3 spring_force(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double rest,
-                            const SpringFamily& family) {
+                         const SpringFamily& family) {
   // BEGIN SOLUTION ex 6.1: x = xa − xb, l = |x|; F = [K (L0 − l) − μ (va − vb)·x̂] x̂, and zero when l = 0
   const Vec3 x = xa - xb;
   const double l = x.norm();

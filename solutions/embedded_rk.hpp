@@ -14,21 +14,23 @@ namespace kit {
 /// `k1` = f(t, y) is passed in, so that an FSAL pair reuses its last stage as the next k_1.
 /// Shapes: y, k1 and f(t, y) are vectors of one size; t, h in s.
 template <class Rhs, class State>
-EmbeddedStep<State> embedded_step(const Rhs& f, const ButcherTableau& tableau, double t, const State& y, double h,
-                                  const State& k1) {
+EmbeddedStep<State> embedded_step(const Rhs& f, const ButcherTableau& tableau, double t, const State& y,
+                                  double h, const State& k1) {
   EmbeddedStep<State> out;
   // BEGIN SOLUTION ex 4.2: compute each stage from the earlier ones (row i of A), then combine them with b and with b − b̂
   const int s = tableau.stages();
   std::vector<State> k(static_cast<std::size_t>(s), k1);
   for (int i = 1; i < s; ++i) {
     State stage = y;
-    for (int j = 0; j < i; ++j) stage += (h * static_cast<double>(tableau.a[std::size_t(i)][std::size_t(j)])) * k[std::size_t(j)];
+    for (int j = 0; j < i; ++j)
+      stage += (h * static_cast<double>(tableau.a[std::size_t(i)][std::size_t(j)])) * k[std::size_t(j)];
     k[std::size_t(i)] = f(t + static_cast<double>(tableau.c[std::size_t(i)]) * h, stage);
   }
   out.y = y;
   out.error = State::Zero(y.size());
   for (int i = 0; i < s; ++i) {
-    const double b = static_cast<double>(tableau.b[std::size_t(i)]), b_hat = static_cast<double>(tableau.b_hat[std::size_t(i)]);
+    const double b = static_cast<double>(tableau.b[std::size_t(i)]),
+                 b_hat = static_cast<double>(tableau.b_hat[std::size_t(i)]);
     out.y += (h * b) * k[std::size_t(i)];
     out.error += (h * (b - b_hat)) * k[std::size_t(i)];
   }

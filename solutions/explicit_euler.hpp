@@ -12,8 +12,7 @@ namespace kit {
 /// f is evaluated exactly once, at the start of the step.
 /// Shapes: u is an Eigen vector; f(t, u) returns a vector of the same shape. t, Δt in s.
 template <class Rhs, class State>
-State explicit_euler_step(const Rhs& f, typename State::Scalar t, const State& u,
-                          typename State::Scalar dt) {
+State explicit_euler_step(const Rhs& f, typename State::Scalar t, const State& u, typename State::Scalar dt) {
   // BEGIN SOLUTION ex 1.1: evaluate f once at (t, u), then move along that slope for Δt
   return u + dt * f(t, u);
   // END SOLUTION

@@ -24,8 +24,10 @@ inline Matrix9 stvk_stiffness(const Matrix32& F, const Matrix2& rest_inverse, do
   for (int node = 0; node < 3; ++node)
     for (int axis = 0; axis < 3; ++axis) {
       Matrix32 dDs = Matrix32::Zero();
-      if (node == 0) dDs.row(axis).setConstant(-1);
-      else dDs(axis, node - 1) = 1;
+      if (node == 0)
+        dDs.row(axis).setConstant(-1);
+      else
+        dDs(axis, node - 1) = 1;
       const Matrix32 dF = dDs * rest_inverse;
       const Matrix2 dE = 0.5 * (dF.transpose() * F + F.transpose() * dF);
       const Matrix2 dS = lame.lambda * dE.trace() * identity + 2 * lame.mu * dE;

@@ -14,9 +14,7 @@ namespace kit {
 inline Mat3 skew(const Vec3& w) {
   // BEGIN SOLUTION ex 8.1: the antisymmetric matrix whose product with a is w × a
   Mat3 S;
-  S << 0, -w.z(), w.y(),
-       w.z(), 0, -w.x(),
-       -w.y(), w.x(), 0;
+  S << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
   return S;
   // END SOLUTION
 }

@@ -26,7 +26,9 @@ inline ParticleSpawn sample_particle(const Emitter& emitter, std::uint8_t index,
   // BEGIN SOLUTION ex 5.1: place and aim by the shape, then draw speed, lifetime, size, colour and alpha as mean + rand·variance
   Vec3 offset{0, 0, 0}, direction = emitter.axis;
   switch (emitter.shape) {
-    case EmitterShape::point: direction = direction_in_cap(emitter.axis, 180.0, random); break;
+    case EmitterShape::point:
+      direction = direction_in_cap(emitter.axis, 180.0, random);
+      break;
     case EmitterShape::disc:
       offset = offset_in_disc(emitter.axis, emitter.radius, random);
       direction = direction_in_cap(emitter.axis, emitter.angle_deg, random);
@@ -36,7 +38,9 @@ inline ParticleSpawn sample_particle(const Emitter& emitter, std::uint8_t index,
       offset = at.offset, direction = at.direction;
       break;
     }
-    case EmitterShape::cone: direction = direction_in_cap(emitter.axis, emitter.angle_deg, random); break;
+    case EmitterShape::cone:
+      direction = direction_in_cap(emitter.axis, emitter.angle_deg, random);
+      break;
   }
   const double speed = draw(emitter.speed, random);
   const auto unit = [](double v) { return float(std::clamp(v, 0.0, 1.0)); };

@@ -23,7 +23,8 @@ inline void composite_over(Image& image, const SpriteTile& tile) {
       const float* source = tile.at(column, row);
       const float alpha = source[3], keep = 1.0f - alpha;
       float* target = image.pixel(x, y);
-      for (int channel = 0; channel < 3; ++channel) target[channel] = alpha * source[channel] + keep * target[channel];
+      for (int channel = 0; channel < 3; ++channel)
+        target[channel] = alpha * source[channel] + keep * target[channel];
     }
   }
   // END SOLUTION

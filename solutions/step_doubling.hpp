@@ -21,13 +21,13 @@
 namespace kit {
 
 struct StepDoubling {
-  double e_min = 1e-8;      ///< below this, double Δt (units of u)
-  double e_max = 1e-6;      ///< above this, halve Δt and retry (units of u)
-  double dt0 = 1e-3;        ///< first trial step [s]
-  double dt_min = 1e-12;    ///< below this the run stops: step_too_small [s]
-  int max_retries = 200;    ///< retries of one step before the run reports `trapped`
+  double e_min = 1e-8;    ///< below this, double Δt (units of u)
+  double e_max = 1e-6;    ///< above this, halve Δt and retry (units of u)
+  double dt0 = 1e-3;      ///< first trial step [s]
+  double dt_min = 1e-12;  ///< below this the run stops: step_too_small [s]
+  int max_retries = 200;  ///< retries of one step before the run reports `trapped`
   long max_steps = 10'000'000;
-  bool guarded = true;      ///< false: the lecture's loop exactly as written (plus the retry bound)
+  bool guarded = true;  ///< false: the lecture's loop exactly as written (plus the retry bound)
 };
 
 /// Integrates with `step(t, u, dt) → u_next` (any one-step method) from (t0, u0) to t_end.
@@ -49,13 +49,15 @@ AdaptiveRun<State> step_doubling(Step&& step, double t0, State u, double t_end, 
       const double h = std::min(dt, t_end - t);  // the last step lands on t_end
       if (h < options.dt_min) {
         run.status = RunStatus::step_too_small;
-        run.message = fmt::format("step {:.3g} s fell below dt_min = {:.3g} at t = {:.6g}", h, options.dt_min, t);
+        run.message =
+            fmt::format("step {:.3g} s fell below dt_min = {:.3g} at t = {:.6g}", h, options.dt_min, t);
         break;
       }
       if (retry >= options.max_retries) {
         run.status = RunStatus::trapped;
         run.message = fmt::format("trapped at t = {:.6g}: {} retries, dt bouncing around {:.3g} between "
-                                  "e > E_max and e < E_min (E_max/E_min = {:.3g})", t, retry, h, options.e_max / options.e_min);
+                                  "e > E_max and e < E_min (E_max/E_min = {:.3g})",
+                                  t, retry, h, options.e_max / options.e_min);
         break;
       }
       const State one = step(t, u, h);

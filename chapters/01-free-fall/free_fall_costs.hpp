@@ -21,9 +21,9 @@ double kernel_cost(Kernel&& kernel) {
 }
 
 inline RoundoffCosts roundoff_costs(const FreeFall& fall, double t_end) {
-  return {kernel_cost([&](long n) { return explicit_error<double>(fall, t_end, n); }),   // ex 1.1
-          kernel_cost([&](long n) { return explicit_error<float>(fall, t_end, n); }),    // ex 1.1
-          kernel_cost([&](long n) { return implicit_error<float>(fall, t_end, n); })};   // ex 1.3
+  return {kernel_cost([&](long n) { return explicit_error<double>(fall, t_end, n); }),  // ex 1.1
+          kernel_cost([&](long n) { return explicit_error<float>(fall, t_end, n); }),   // ex 1.1
+          kernel_cost([&](long n) { return implicit_error<float>(fall, t_end, n); })};  // ex 1.3
 }
 
 }  // namespace kit

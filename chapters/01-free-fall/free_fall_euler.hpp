@@ -81,10 +81,10 @@ inline EulerRuns run_euler(Report& report, const FreeFall& fall, double dt, doub
   EulerRuns r;
   const long n = whole_steps(t_end, dt);
   r.loop = report.attempt("the lecture's loop", [&] { return lecture_loop(fall, dt, n, r.rhs_evals); });
-  r.expl = report.attempt(
-      "explicit Euler, matrix form", [&] { return explicit_matrix_form(fall, t_end, dt); });
-  r.impl = report.attempt(
-      "implicit Euler, matrix form", [&] { return implicit_matrix_form(fall, t_end, dt); });
+  r.expl =
+      report.attempt("explicit Euler, matrix form", [&] { return explicit_matrix_form(fall, t_end, dt); });
+  r.impl =
+      report.attempt("implicit Euler, matrix form", [&] { return implicit_matrix_form(fall, t_end, dt); });
   std::vector<double> times(std::size_t(n) + 1);
   for (long k = 0; k <= n; ++k) times[std::size_t(k)] = double(k) * dt;  // as record() samples them
   r.reference = reference_solution(fall, 0.0, fall.initial_state(), times, {}, &r.reference_stats);
@@ -111,8 +111,8 @@ template <class S>
 double implicit_error(const FreeFall& fall, double t_end, long n) {
   const auto dt = S(t_end / double(n));
   const ImplicitEulerAffine<2, S> implicit(fall.affine().cast<S>(), dt);
-  const auto u = advance(fall.initial_state().cast<S>().eval(), n,
-                         [&](const auto& s) { return implicit.step(s); });
+  const auto u =
+      advance(fall.initial_state().cast<S>().eval(), n, [&](const auto& s) { return implicit.step(s); });
   return double(u[0]) - fall.position(double(n) * double(dt));
 }
 
@@ -125,14 +125,20 @@ struct EulerOrders {
   /// The least-squares slope of each sweep, "-" for a scheme that did not run.
   std::vector<Field> slopes() const {
     const auto slope = [](const Sweep& s) { return s.dt.empty() ? ReportValue() : ReportValue(s.order()); };
-    return {{"global_explicit", slope(global_explicit)}, {"global_implicit", slope(global_implicit)},
-            {"local_explicit", slope(local_explicit)}, {"local_implicit", slope(local_implicit)}};
+    return {{"global_explicit", slope(global_explicit)},
+            {"global_implicit", slope(global_implicit)},
+            {"local_explicit", slope(local_explicit)},
+            {"local_implicit", slope(local_implicit)}};
   }
   /// {"dt": [...], "global_explicit": [...] or null, ...}: the errors, one per Δt, for --json.
   nlohmann::json to_json() const {
-    const auto errors = [](const Sweep& s) { return s.dt.empty() ? nlohmann::json() : nlohmann::json(s.error); };
-    return {{"dt", dt}, {"global_explicit", errors(global_explicit)},
-            {"global_implicit", errors(global_implicit)}, {"local_explicit", errors(local_explicit)},
+    const auto errors = [](const Sweep& s) {
+      return s.dt.empty() ? nlohmann::json() : nlohmann::json(s.error);
+    };
+    return {{"dt", dt},
+            {"global_explicit", errors(global_explicit)},
+            {"global_implicit", errors(global_implicit)},
+            {"local_explicit", errors(local_explicit)},
             {"local_implicit", errors(local_implicit)}};
   }
 };
@@ -166,10 +172,10 @@ struct CostPoint {
 
 /// The round-off sweep: |x_N − x̃(T)| [m] against Δt [s] as Δt shrinks until round-off wins.
 struct Roundoff {
-  Sweep doubles;          ///< explicit Euler in double, one point per step count of the sweep
-  Sweep roundoff_part;    ///< | |error| − T·Δt·|g|/2 |: what truncation does not explain
-  Sweep floats;           ///< explicit Euler in float, on the float sweep's step counts
-  Sweep floats_implicit;  ///< implicit Euler in float, the same
+  Sweep doubles;                ///< explicit Euler in double, one point per step count of the sweep
+  Sweep roundoff_part;          ///< | |error| − T·Δt·|g|/2 |: what truncation does not explain
+  Sweep floats;                 ///< explicit Euler in float, on the float sweep's step counts
+  Sweep floats_implicit;        ///< implicit Euler in float, the same
   std::vector<CostPoint> cost;  ///< what each double run cost, one per point of `doubles`
 };
 
@@ -177,9 +183,14 @@ struct Roundoff {
 /// (asked for and used), its budget of steps a run and whether it raised the smallest Δt, and
 /// the float sweep's smallest Δt [s] and budget.
 inline std::vector<Field> sweep_plan(const StepSweep& doubles, const StepSweep& floats) {
-  return {{"t_end", doubles.t_end}, {"dt_max", doubles.dt_max}, {"dt_min_requested", doubles.dt_min_requested},
-          {"dt_min", doubles.dt_min}, {"max_steps", doubles.max_steps}, {"raised", doubles.raised()},
-          {"float_dt_min", floats.dt_min}, {"float_max_steps", floats.max_steps}};
+  return {{"t_end", doubles.t_end},
+          {"dt_max", doubles.dt_max},
+          {"dt_min_requested", doubles.dt_min_requested},
+          {"dt_min", doubles.dt_min},
+          {"max_steps", doubles.max_steps},
+          {"raised", doubles.raised()},
+          {"float_dt_min", floats.dt_min},
+          {"float_max_steps", floats.max_steps}};
 }
 
 /// Runs explicit Euler in double for every step count of `doubles`, and both Euler schemes in

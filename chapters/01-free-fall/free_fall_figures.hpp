@@ -51,8 +51,8 @@ inline Figure trajectories_figure(const FreeFall& fall, double dt, double t_end,
   for (const auto& [name, run, style] : schemes)
     if (*run) top.add({name, (*run)->t, (*run)->component(0), "linespoints", style});
   top.points("GSL rk8pd reference", runs.reference.t, runs.reference.component(0), look::reference + " pt 2");
-  auto& below = figure.panel("time t [s]", "x - x_{exact} [m]",
-                             "the gap (positive = above the exact parabola)");
+  auto& below =
+      figure.panel("time t [s]", "x - x_{exact} [m]", "the gap (positive = above the exact parabola)");
   below.place = {{0.0, 0.0, 1.0, 0.36}};
   for (const auto& [name, run, style] : schemes)
     if (*run) below.add({name, (*run)->t, gap(fall, **run), "linespoints", style});
@@ -62,8 +62,10 @@ inline Figure trajectories_figure(const FreeFall& fall, double dt, double t_end,
     for (double y : series.y) largest = std::max(largest, std::isfinite(y) ? std::abs(y) : 0.0);
   if (largest > 0) {
     const double decade = std::pow(10.0, std::floor(std::log10(largest / 2))), wanted = largest / 2;
-    const double step = wanted <= decade ? decade : wanted <= 2 * decade ? 2 * decade
-                        : wanted <= 5 * decade ? 5 * decade : 10 * decade;
+    const double step = wanted <= decade       ? decade
+                        : wanted <= 2 * decade ? 2 * decade
+                        : wanted <= 5 * decade ? 5 * decade
+                                               : 10 * decade;
     below.commands.push_back(fmt::format("set ytics {:g}", step));
   }
   return figure;
@@ -108,11 +110,11 @@ inline Figure orders_figure(const FreeFall& fall, double t_end, const EulerOrder
     return fmt::format("{}: slope {:.3f}", what, s.order());
   };
   const auto& dts = o.dt;
-  for (const auto& [what, sweep, style] : {
-           std::tuple{"explicit, at T", &o.global_explicit, red + " pt 7 ps 0.8"},
-           {"implicit, at T", &o.global_implicit, blue + " pt 6 ps 1.6"},
-           {"explicit, after one step", &o.local_explicit, red + " pt 5 ps 0.8"},
-           {"implicit, after one step", &o.local_implicit, blue + " pt 4 ps 1.6"}})
+  for (const auto& [what, sweep, style] :
+       {std::tuple{"explicit, at T", &o.global_explicit, red + " pt 7 ps 0.8"},
+        {"implicit, at T", &o.global_implicit, blue + " pt 6 ps 1.6"},
+        {"explicit, after one step", &o.local_explicit, red + " pt 5 ps 0.8"},
+        {"implicit, after one step", &o.local_implicit, blue + " pt 4 ps 1.6"}})
     if (!sweep->dt.empty()) loglog.points(slope(what, *sweep), sweep->dt, sweep->error, style);
   loglog.line("predictions T·Δt·|g|/2 and Δt²·|g|/2", dts, power_law(dts, 0.5 * t_end * g), look::prediction);
   loglog.line("", dts, power_law(dts, 0.5 * g, 2), look::prediction);
@@ -123,17 +125,18 @@ inline Figure orders_figure(const FreeFall& fall, double t_end, const EulerOrder
 inline Figure roundoff_figure(const FreeFall& fall, double t_end, const Roundoff& r) {
   const double g = std::abs(fall.g);
   Figure figure("roundoff", fmt::format("Shrinking Δt until round-off wins: explicit and implicit Euler at "
-                                        "T = {} s", t_end));
+                                        "T = {} s",
+                                        t_end));
   figure.width_in = 8.0;
   auto& sweep = figure.panel("time step Δt [s]", "|x_N - x_{exact}(T)| [m]");
   sweep.logx = sweep.logy = true;
   // Only the curves whose exercise is written (ex 1.1, ex 1.3) are drawn.
   Sweep bests;
-  for (const auto& [name, curve, style] : {
-           std::tuple{"explicit, double", &r.doubles, look::explicit_euler + " pt 7 ps 0.7"},
-           {"explicit, double: round-off part", &r.roundoff_part, look::explicit_euler + " dt 3 pt 1"},
-           {"explicit, float", &r.floats, look::single_precision + " lw 3 pt 5 ps 1.1"},
-           {"implicit, float", &r.floats_implicit, look::implicit_euler + " dt 2 pt 6 ps 1.3"}}) {
+  for (const auto& [name, curve, style] :
+       {std::tuple{"explicit, double", &r.doubles, look::explicit_euler + " pt 7 ps 0.7"},
+        {"explicit, double: round-off part", &r.roundoff_part, look::explicit_euler + " dt 3 pt 1"},
+        {"explicit, float", &r.floats, look::single_precision + " lw 3 pt 5 ps 1.1"},
+        {"implicit, float", &r.floats_implicit, look::implicit_euler + " dt 2 pt 6 ps 1.3"}}) {
     if (curve->dt.empty()) continue;
     sweep.add({name, curve->dt, curve->error, "linespoints", style});
     if (curve != &r.roundoff_part) bests.add(curve->dt[curve->best()], curve->error[curve->best()]);

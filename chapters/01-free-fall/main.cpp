@@ -37,7 +37,7 @@ void the_system(kit::Report& report, Setup& s) {
 // closed form: the error after k steps is k/2·Δt²·|g| (ERRATA item 1).
 kit::EulerRuns loop_and_matrix_forms(kit::Report& report, const Setup& s) {
   const auto r = kit::run_euler(report, s.fall, s.dt, s.t_end);  // the methods whose exercise is written
-  const auto& expl = r.explicit_run();                            // matrix form (ex 1.2), else loop (ex 1.1)
+  const auto& expl = r.explicit_run();                           // matrix form (ex 1.2), else loop (ex 1.1)
   const auto gap_expl = kit::gap(s.fall, expl), gap_impl = kit::gap(s.fall, r.impl);
   const auto check = kit::check_euler_gaps(s.fall, s.dt, s.t_end, gap_expl, gap_impl);
   auto table = report.table("samples", kit::sample_columns());
@@ -49,14 +49,17 @@ kit::EulerRuns loop_and_matrix_forms(kit::Report& report, const Setup& s) {
                  check.predicted[k], kit::value_at(check.match, k), kit::height_at(r.loop, k),
                  r.reference.u[k][0]});
   table.print();
-  report.say("", "\nOver all {steps} steps, | |err| - k/2·Δt²·|g| | <= {max_prediction_mismatch:.3g} m; "
-             "the loop and the matrix form differ by {loop_vs_matrix:.3g} m.\n", {{"steps", s.n},
-             {"rhs_evals", kit::optional_value(r.loop_rhs_evals())},
-             {"max_prediction_mismatch", kit::optional_value(check.checked_mismatch())},
-             {"loop_vs_matrix", kit::optional_value(r.loop_vs_matrix())}});
-  report.say("reference", "GSL rk8pd reference: max |x - exact| = {max_error:.3g} m, {rhs_evals} "
-             "right-hand-side evaluations.\n", {{"max_error", r.reference_error(s.fall)},
-             {"rhs_evals", r.reference_stats.rhs_evals}});
+  report.say("",
+             "\nOver all {steps} steps, | |err| - k/2·Δt²·|g| | <= {max_prediction_mismatch:.3g} m; "
+             "the loop and the matrix form differ by {loop_vs_matrix:.3g} m.\n",
+             {{"steps", s.n},
+              {"rhs_evals", kit::optional_value(r.loop_rhs_evals())},
+              {"max_prediction_mismatch", kit::optional_value(check.checked_mismatch())},
+              {"loop_vs_matrix", kit::optional_value(r.loop_vs_matrix())}});
+  report.say("reference",
+             "GSL rk8pd reference: max |x - exact| = {max_error:.3g} m, {rhs_evals} "
+             "right-hand-side evaluations.\n",
+             {{"max_error", r.reference_error(s.fall)}, {"rhs_evals", r.reference_stats.rhs_evals}});
   return r;
 }
 
@@ -64,12 +67,15 @@ kit::EulerRuns loop_and_matrix_forms(kit::Report& report, const Setup& s) {
 kit::EulerOrders orders(kit::Report& report, const Setup& s) {
   const auto o = kit::measure_orders(report, s.fall, s.t_end);
   report.json("convergence") = o.to_json();
-  report.say("convergence", "\nObserved orders, least-squares slopes over dt = {dt_largest:.3g} .. "
-             "{dt_smallest:.3g} s:\n  error at T = {t_end} s:     ", {{"t_end", s.t_end},
-             {"dt_largest", o.dt.front()}, {"dt_smallest", o.dt.back()}});
-  report.say("convergence/slopes", "explicit {global_explicit:.4f}, implicit {global_implicit:.4f}  "
+  report.say("convergence",
+             "\nObserved orders, least-squares slopes over dt = {dt_largest:.3g} .. "
+             "{dt_smallest:.3g} s:\n  error at T = {t_end} s:     ",
+             {{"t_end", s.t_end}, {"dt_largest", o.dt.front()}, {"dt_smallest", o.dt.back()}});
+  report.say("convergence/slopes",
+             "explicit {global_explicit:.4f}, implicit {global_implicit:.4f}  "
              "(global error, expected 1)\n  error after one step: explicit {local_explicit:.4f}, implicit "
-             "{local_implicit:.4f}  (local error, expected 2)\n", o.slopes());
+             "{local_implicit:.4f}  (local error, expected 2)\n",
+             o.slopes());
   return o;
 }
 
@@ -78,17 +84,21 @@ kit::EulerOrders orders(kit::Report& report, const Setup& s) {
 kit::Roundoff roundoff(kit::Report& report, const Setup& s) {
   const auto doubles = kit::budget_sweep(s.t_end, 0.1, s.dt_min, 2'000'000'000);
   const auto floats = kit::budget_sweep(s.t_end, 0.1, 1e-7, 100'000'000);  // float stagnates below 1e-7 s
-  const std::vector<kit::Field> plan = kit::sweep_plan(doubles, floats);  // T, both Δt ranges, budgets
+  const std::vector<kit::Field> plan = kit::sweep_plan(doubles, floats);   // T, both Δt ranges, budgets
   report.store("roundoff/sweep", plan);
   kit::announce_roundoff(report, doubles, floats, kit::roundoff_costs(s.fall, s.t_end));  // or refuses
   if (doubles.raised() || floats.raised())
-    report.say("roundoff/sweep", "\nThe round-off sweep takes at most {max_steps} steps a run "
+    report.say("roundoff/sweep",
+               "\nThe round-off sweep takes at most {max_steps} steps a run "
                "({float_max_steps} in float):\nover T = {t_end} s, its smallest dt is {dt_min:.3g} s "
-               "(--dt-min asked for {dt_min_requested:.3g} s), and {float_dt_min:.3g} s in float.\n", plan);
+               "(--dt-min asked for {dt_min_requested:.3g} s), and {float_dt_min:.3g} s in float.\n",
+               plan);
   const auto r = kit::measure_roundoff(report, s.fall, doubles, floats);
   if (!r.cost.empty())
-    report.say("roundoff/sweep", "\nWhat accuracy costs (explicit Euler, double, T = {t_end} s): each digit "
-               "costs 10x the steps\n", plan);
+    report.say("roundoff/sweep",
+               "\nWhat accuracy costs (explicit Euler, double, T = {t_end} s): each digit "
+               "costs 10x the steps\n",
+               plan);
   auto cost = report.table("cost", kit::cost_columns());
   for (std::size_t i = 0; i < r.cost.size(); ++i) {  // every 4th run and the finest printed, all in the JSON
     const auto& c = r.cost[i];
@@ -125,7 +135,8 @@ void figures(kit::ChapterApp& app, const Setup& s, const kit::EulerRuns& runs, c
 
 int main(int argc, char** argv) {
   Setup s;
-  kit::ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR, "Chapter 1: free fall, explicit and "
+  kit::ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR,
+                      "Chapter 1: free fall, explicit and "
                       "implicit Euler");
   kit::add_free_fall_flags(app, s.fall, s.dt, s.t_end, s.dt_min);
   return app.run(argc, argv, [&] {

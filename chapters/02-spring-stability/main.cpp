@@ -12,11 +12,11 @@ namespace {
 using kit::Scheme;
 
 struct Setup {
-  kit::Spring spring;             // m = 1 kg, K = 100 N/m, μ = 0, L0 = 1 m
-  kit::Vec2 u0{1.5, 0.0};         // x0 [m], v0 [m/s]
-  double dt = 0.02, t_end = 2.0;  // [s]
-  long n = 0;                     // steps of dt over [0, t_end]
-  kit::Written written;           // the schemes, and R(z), whose exercises are written
+  kit::Spring spring;                               // m = 1 kg, K = 100 N/m, μ = 0, L0 = 1 m
+  kit::Vec2 u0{1.5, 0.0};                           // x0 [m], v0 [m/s]
+  double dt = 0.02, t_end = 2.0;                    // [s]
+  long n = 0;                                       // steps of dt over [0, t_end]
+  kit::Written written;                             // the schemes, and R(z), whose exercises are written
   double h() const { return spring.omega() * dt; }  // ω·Δt; below, the spectral radius of one step at Δt
   double zeta() const { return spring.damping_ratio(); }
   kit::ReportValue radius(Scheme x) const { return kit::spectral_radius(written, x, h(), zeta()); }  // or "-"
@@ -44,15 +44,18 @@ kit::SpringRuns every_scheme(kit::ChapterApp& app, const Setup& s) {
     const auto finished = [diverged](double v) { return diverged ? kit::ReportValue{} : v; };
     const double x = run.trajectory.u.back()[0];
     table.row(kit::key(scheme), {std::string(kit::name(scheme)), finished(x), finished(std::abs(x - exact)),
-              finished(run.energy_ratio), finished(run.growth), s.radius(scheme), status,
-              finished(run.max_drift), run.steps(), run.diverged()});
+                                 finished(run.energy_ratio), finished(run.growth), s.radius(scheme), status,
+                                 finished(run.max_drift), run.steps(), run.diverged()});
   }
   table.print();
-  app.report().say("", "growth/step = (E_N/E_0)^(1/2N); exact for explicit Euler when undamped: sqrt(1 + "
-                   "(ω·dt)²) = {explicit_undamped_growth" + factor.substr(1) + "\n",
+  app.report().say("",
+                   "growth/step = (E_N/E_0)^(1/2N); exact for explicit Euler when undamped: sqrt(1 + "
+                   "(ω·dt)²) = {explicit_undamped_growth" +
+                       factor.substr(1) + "\n",
                    {{"explicit_undamped_growth", std::sqrt(1 + s.h() * s.h())}});
   const auto gsl = app.report().attempt("GSL cross-check", [&] {  // GSL runs the student's A, b (ex 2.1)
-    return kit::gsl_cross_check(s.spring, s.u0, s.dt, s.n); });
+    return kit::gsl_cross_check(s.spring, s.u0, s.dt, s.n);
+  });
   if (gsl) app.report().say("", gsl->sentence(), gsl->fields());
   return runs;
 }
@@ -64,15 +67,16 @@ void critical_steps(kit::Report& report, const Setup& s) {
   for (const auto& c : kit::textbook_critical_cases(s.spring, s.written)) {
     const kit::Critical dt = kit::critical_step(c.scheme, c.spring);
     table.row(kit::key(c.scheme), {std::string(kit::name(c.scheme)), c.spring.damping,
-              c.spring.damping_ratio(), dt.measured, dt.analytic, std::string(c.formula), c.closed_form,
-              (dt.measured - c.closed_form) / c.closed_form});
+                                   c.spring.damping_ratio(), dt.measured, dt.analytic, std::string(c.formula),
+                                   c.closed_form, (dt.measured - c.closed_form) / c.closed_form});
   }
   table.print();
   report.print("On this spring as given:");
   for (Scheme scheme : s.written.schemes) {
     const kit::Critical dt = kit::critical_step(scheme, s.spring, 2'000'000);  // shorter runs: printed only
-    report.say(std::string("limits_as_given/") + kit::key(scheme), fmt::format("  {}: {};", kit::name(scheme),
-               kit::limit_text(dt.analytic)), {{"analytic", dt.analytic}, {"measured", dt.measured}});
+    report.say(std::string("limits_as_given/") + kit::key(scheme),
+               fmt::format("  {}: {};", kit::name(scheme), kit::limit_text(dt.analytic)),
+               {{"analytic", dt.analytic}, {"measured", dt.measured}});
   }
   report.print("\n");
 }
@@ -98,7 +102,8 @@ void stiff_springs(kit::Report& report, const Setup& s) {
     amplitudes.row(row.label, row.amplitudes);
     divergences.row(row.label, row.divergences);
   }
-  report.say("parameters", "\nExtremes, 1000 steps of dt = {dt} s: the amplitude after them, sqrt(E/E0), as a"
+  report.say("parameters",
+             "\nExtremes, 1000 steps of dt = {dt} s: the amplitude after them, sqrt(E/E0), as a"
              " multiple of the start\n(-: diverged, |u| passed 1e8 times the starting distance from rest):\n",
              {{"dt", s.dt}});
   amplitudes.print();

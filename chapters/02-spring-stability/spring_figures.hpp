@@ -130,7 +130,8 @@ inline std::vector<Figure> spring_figures(const Spring& spring, const Vec2& u0, 
                                           const SpringRuns& runs, const Written& written) {
   const double h = spring.omega() * dt, zeta = spring.damping_ratio();
   std::vector<Figure> figures{positions_figure(spring, u0, dt, t_end, runs),
-                              phase_figure(spring, u0, t_end, runs), energy_figure(spring, u0, dt, t_end, runs)};
+                              phase_figure(spring, u0, t_end, runs),
+                              energy_figure(spring, u0, dt, t_end, runs)};
   if (written.factors) figures.push_back(amplification_figure(h, zeta, written));
   if (written.factors) figures.push_back(stability_regions_figure(h, zeta));
   if (!written.schemes.empty()) figures.push_back(stability_map_figure(written));

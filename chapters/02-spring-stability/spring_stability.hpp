@@ -165,9 +165,10 @@ inline std::vector<CriticalCase> textbook_critical_cases(const Spring& spring, c
   if (!(zeta > 0 && zeta < 1)) damped.damping = 0.2 * std::sqrt(spring.stiffness * spring.mass);  // ζ = 0.1
   undamped.damping = 0;
   std::vector<CriticalCase> cases;
-  for (const auto& c : {CriticalCase{Scheme::explicit_euler, damped, damped.damping / damped.stiffness, "μ/K"},
-                        {Scheme::symplectic_euler, undamped, 2.0 / w, "2/ω"},
-                        {Scheme::rk4, undamped, 2.0 * std::sqrt(2.0) / w, "2√2/ω"}})
+  for (const auto& c :
+       {CriticalCase{Scheme::explicit_euler, damped, damped.damping / damped.stiffness, "μ/K"},
+        {Scheme::symplectic_euler, undamped, 2.0 / w, "2/ω"},
+        {Scheme::rk4, undamped, 2.0 * std::sqrt(2.0) / w, "2√2/ω"}})
     if (written.has(c.scheme)) cases.push_back(c);
   return cases;
 }
@@ -181,8 +182,11 @@ struct NamedSpring {
 inline std::vector<NamedSpring> extreme_springs(const Spring& spring) {
   std::vector<NamedSpring> springs;
   for (auto [label, k_factor, zeta] :
-       {std::tuple{"undamped (μ = 0)", 1.0, 0.0}, {"critical damping", 1.0, 1.0}, {"overdamped", 1.0, 3.0},
-        {"stiff, ω×100", 1e4, 0.0}, {"stiff, ω = 1e6 rad/s", 1e12 * spring.mass / spring.stiffness, 0.0}}) {
+       {std::tuple{"undamped (μ = 0)", 1.0, 0.0},
+        {"critical damping", 1.0, 1.0},
+        {"overdamped", 1.0, 3.0},
+        {"stiff, ω×100", 1e4, 0.0},
+        {"stiff, ω = 1e6 rad/s", 1e12 * spring.mass / spring.stiffness, 0.0}}) {
     Spring variant = spring;
     variant.stiffness *= k_factor;
     variant.damping = 2 * zeta * std::sqrt(variant.stiffness * variant.mass);
@@ -200,11 +204,11 @@ struct ExtremeRow {
   std::vector<ReportValue> amplitudes, divergences;
 };
 inline std::vector<ExtremeRow> measure_extremes(const Spring& given, const Vec2& u0, double dt, long steps,
-                                               const std::vector<Scheme>& schemes) {
+                                                const std::vector<Scheme>& schemes) {
   std::vector<ExtremeRow> rows;
   for (const auto& [label, spring] : extreme_springs(given)) {
-    ExtremeRow row{label, {std::string(label), spring.damping_ratio(), spring.omega() * dt},
-                   {std::string(label)}};
+    ExtremeRow row{
+        label, {std::string(label), spring.damping_ratio(), spring.omega() * dt}, {std::string(label)}};
     for (const auto& [s, run] : run_every_scheme(spring, u0, dt, steps, schemes)) {
       if (run.diverged()) {
         row.amplitudes.emplace_back();  // null

@@ -40,7 +40,8 @@ void free_fall_is_exact(kit::Report& report, long steps) {
   };
   const auto midpoint = off_by("free-fall midpoint", [&](auto& u) { return midpoint_step(fall, 0., u, dt); });
   const auto euler = off_by("free-fall Euler", [&](auto& u) { return explicit_euler_step(fall, 0., u, dt); });
-  report.say("free_fall", "Free fall over 1 s in {steps} steps: midpoint RK2 is off by "
+  report.say("free_fall",
+             "Free fall over 1 s in {steps} steps: midpoint RK2 is off by "
              "{midpoint_relative_error:.2e} (relative), explicit Euler by {euler_relative_error:.2e}.\n"
              "Midpoint RK2 integrates x'' = g exactly: what remains is round-off.\n\n",
              {{"steps", steps}, {"midpoint_relative_error", midpoint}, {"euler_relative_error", euler}});
@@ -62,8 +63,8 @@ Sweeps orders_on_the_spring(kit::ChapterApp& app, const kit::Spring& spring, con
     };
     const int p = kit::order(s), per_step = kit::evaluations_per_step(s);
     const auto& sweep = sweeps[s] = kit::sweep_convergence(error_at, horizon.t, w, p, per_step);
-    orders.row(kit::key(s), {kit::name(s), long(p), sweep.order.slope, sweep.fitted, long(per_step),
-                             sweep.best_error()});
+    orders.row(kit::key(s),
+               {kit::name(s), long(p), sweep.order.slope, sweep.fitted, long(per_step), sweep.best_error()});
   }
   orders.print();
   return sweeps;
@@ -75,8 +76,10 @@ Drifts energy_over_periods(kit::ChapterApp& app, const kit::Spring& spring, cons
   const kit::ProgressTask progress("energy");
   const long steps = long(std::ceil(double(periods) * 2 * M_PI / 0.1));
   const double dt = 0.1 / spring.omega();
-  app.report().say("energy_run", "\nEnergy over {periods} periods with omega·dt = {omega_dt} "
-                   "({steps} steps):\n", {{"periods", periods}, {"omega_dt", 0.1}, {"steps", steps}});
+  app.report().say("energy_run",
+                   "\nEnergy over {periods} periods with omega·dt = {omega_dt} "
+                   "({steps} steps):\n",
+                   {{"periods", periods}, {"omega_dt", 0.1}, {"steps", steps}});
   auto table = app.report().table("energy", kit::energy_columns());
   Drifts drifts;
   const auto energy = [&](const Vec2& u) { return spring.energy(u); };
@@ -100,8 +103,8 @@ void what_accuracy_costs(kit::ChapterApp& app, const Sweeps& sweeps) {
       const kit::ReportValue measured = n.extrapolated ? kit::ReportValue{} : long(n.evaluations);
       const kit::ReportValue fitted = n.extrapolated ? kit::ReportValue{n.evaluations} : kit::ReportValue{};
       cost.row_at({kit::key(s), fmt::format("{:.0e}", target)},
-               {kit::name(s), target, measured, fitted, n.reachable, n.extrapolated ? fitted : measured,
-                n.extrapolated});
+                  {kit::name(s), target, measured, fitted, n.reachable, n.extrapolated ? fitted : measured,
+                   n.extrapolated});
     }
   }
   cost.print();

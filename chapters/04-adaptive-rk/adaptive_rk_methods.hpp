@@ -40,8 +40,8 @@ namespace kit {
 
 /// The general driver running the student's embedded step (ex 4.2) with the student's PI law (ex 4.3).
 template <int N, class Rhs>
-AdaptiveRun<Vec<N>> student_embedded_run(const Rhs& f, const ButcherTableau& tableau, double t0, const Vec<N>& y0,
-                                         double t1, const EmbeddedOptions& options) {
+AdaptiveRun<Vec<N>> student_embedded_run(const Rhs& f, const ButcherTableau& tableau, double t0,
+                                         const Vec<N>& y0, double t1, const EmbeddedOptions& options) {
   const auto step = [](const auto&... args) { return embedded_step(args...); };
   return embedded_run(step, pi_step_factor, f, tableau, t0, y0, t1, options);
 }
@@ -74,7 +74,8 @@ NamedRun<N> detailed_run(DetailedMethod method, const Rhs& f, double t0, const V
     o.rtol = options.rtol, o.atol = options.atol, o.h0 = options.h0, o.max_steps = options.max_steps;
     return {"DOPRI5", look::dopri5, dopri5_run(f, t0, y0, t1, o)};
 #else
-    return {"DOPRI5 (ex 4.2, 4.3)", look::dopri5, student_embedded_run(f, dormand_prince(), t0, y0, t1, options)};
+    return {"DOPRI5 (ex 4.2, 4.3)", look::dopri5,
+            student_embedded_run(f, dormand_prince(), t0, y0, t1, options)};
 #endif
   }
   const bool ck = method == DetailedMethod::cash_karp;
@@ -89,14 +90,15 @@ enum class DoublingBase { euler, midpoint };
 /// The lecture's step doubling (ex 4.1) over `base`, with run.stats.rhs_evals counting every
 /// evaluation of f (three steps of the base method per trial, ERRATA item 11).
 template <int N, class Rhs>
-AdaptiveRun<Vec<N>> counted_step_doubling(DoublingBase base, const Rhs& f, double t0, const Vec<N>& y0, double t1,
-                                          const StepDoubling& options) {
+AdaptiveRun<Vec<N>> counted_step_doubling(DoublingBase base, const Rhs& f, double t0, const Vec<N>& y0,
+                                          double t1, const StepDoubling& options) {
   long evaluations = 0;
   const CountingRhs<Rhs> counted{f, evaluations};
   ProgressCounter progress;  // the trials, on the progress line
   const auto step = [&](double t, const Vec<N>& y, double dt) {
     progress.add(1);
-    return base == DoublingBase::midpoint ? midpoint_step(counted, t, y, dt) : explicit_euler_step(counted, t, y, dt);
+    return base == DoublingBase::midpoint ? midpoint_step(counted, t, y, dt)
+                                          : explicit_euler_step(counted, t, y, dt);
   };
   AdaptiveRun<Vec<N>> run = step_doubling(step, t0, y0, t1, options);
   run.stats.rhs_evals = evaluations;
@@ -115,7 +117,8 @@ WorkRun<N> work_run(const AdaptiveRun<Vec<N>>& run) {
 template <int N, class Rhs>
 WorkMethod<N> embedded_pair_method(const ButcherTableau& tableau, std::string look, Rhs f, double t0,
                                    const Vec<N>& y0, double t1, double h0, std::vector<double> tolerances) {
-  return {tableau.name + " (kit)", std::move(look), std::move(tolerances), [&tableau, f, t0, y0, t1, h0](double tol) {
+  return {tableau.name + " (kit)", std::move(look), std::move(tolerances),
+          [&tableau, f, t0, y0, t1, h0](double tol) {
             return work_run(student_embedded_run(f, tableau, t0, y0, t1, {tol, tol, h0, 5'000'000}));
           }};
 }
@@ -128,7 +131,8 @@ WorkMethod<N> chapter_dopri5_method(Rhs f, double t0, const Vec<N>& y0, double t
 #if KIT_PRODUCTION_DOPRI5
   return dopri5_method(f, t0, y0, t1, h0, std::move(tolerances));
 #else
-  return embedded_pair_method(dormand_prince(), look::dopri5 + " pt 7 lw 2", f, t0, y0, t1, h0, std::move(tolerances));
+  return embedded_pair_method(dormand_prince(), look::dopri5 + " pt 7 lw 2", f, t0, y0, t1, h0,
+                              std::move(tolerances));
 #endif
 }
 
@@ -149,12 +153,12 @@ inline Dopri5Runner chapter_dopri5() {
 /// The lecture's step doubling over `base` with E_max = tol and E_min = tol/100 (a ratio that
 /// cannot trap it), from dt0 = h0, at most 5·10⁶ steps.
 template <int N, class Rhs>
-WorkMethod<N> step_doubling_method(DoublingBase base, Rhs f, double t0, const Vec<N>& y0, double t1, double h0,
-                                   std::vector<double> tolerances) {
+WorkMethod<N> step_doubling_method(DoublingBase base, Rhs f, double t0, const Vec<N>& y0, double t1,
+                                   double h0, std::vector<double> tolerances) {
   const bool euler = base == DoublingBase::euler;
   return {euler ? "step doubling, Euler" : "step doubling, RK2",
-          (euler ? look::step_doubling_euler + " pt 2" : look::step_doubling_rk2 + " pt 3"), std::move(tolerances),
-          [=](double tol) {
+          (euler ? look::step_doubling_euler + " pt 2" : look::step_doubling_rk2 + " pt 3"),
+          std::move(tolerances), [=](double tol) {
             StepDoubling options;
             options.e_max = tol, options.e_min = tol / 100, options.dt0 = h0, options.max_steps = 5'000'000;
             return work_run(counted_step_doubling(base, f, t0, y0, t1, options));
@@ -163,7 +167,8 @@ WorkMethod<N> step_doubling_method(DoublingBase base, Rhs f, double t0, const Ve
 
 /// Fixed-step RK4 (ex 3.2): its "tolerances" are step counts n, Δt = (t1 − t0)/n.
 template <int N, class Rhs>
-WorkMethod<N> fixed_rk4_method(Rhs f, double t0, const Vec<N>& y0, double t1, std::vector<double> step_counts) {
+WorkMethod<N> fixed_rk4_method(Rhs f, double t0, const Vec<N>& y0, double t1,
+                               std::vector<double> step_counts) {
   return {"fixed-step RK4", look::fixed_rk4 + " pt 13", std::move(step_counts), [=](double count) {
             long evaluations = 0;
             const CountingRhs<Rhs> counted{f, evaluations};
@@ -180,26 +185,28 @@ WorkMethod<N> fixed_rk4_method(Rhs f, double t0, const Vec<N>& y0, double t1, st
 /// rk8pd, Boost.Odeint's dopri5, fixed-step RK4 (3·10³ … 10⁶ steps), and step doubling over
 /// Euler (to 10⁻⁷) and RK2 (to 10⁻¹⁰). The lower orders stop early: their cost explodes.
 template <int N, class Rhs>
-std::vector<WorkMethod<N>> every_work_method(const Rhs& f, double t0, const Vec<N>& y0, double t1, double h0) {
+std::vector<WorkMethod<N>> every_work_method(const Rhs& f, double t0, const Vec<N>& y0, double t1,
+                                             double h0) {
   const std::vector<double> tol = decades(3, 12);
   const auto to = [&](int last) { return std::vector<double>(tol.begin(), tol.begin() + last); };
-  return {chapter_dopri5_method(f, t0, y0, t1, h0, tol),
-          embedded_pair_method(cash_karp(), look::cash_karp + " pt 5", f, t0, y0, t1, h0, tol),
-          embedded_pair_method(bogacki_shampine(), look::bogacki_shampine + " pt 9", f, t0, y0, t1, h0, to(6)),
-          gsl_method(GslStepper::rkck, f, t0, y0, t1, h0, tol),
-          gsl_method(GslStepper::rkf45, f, t0, y0, t1, h0, tol),
-          gsl_method(GslStepper::rk8pd, f, t0, y0, t1, h0, tol),
-          boost_dopri5_method(f, t0, y0, t1, h0, tol),
-          fixed_rk4_method(f, t0, y0, t1, {3e3, 1e4, 3e4, 1e5, 3e5, 1e6}),
-          step_doubling_method(DoublingBase::euler, f, t0, y0, t1, h0, to(5)),
-          step_doubling_method(DoublingBase::midpoint, f, t0, y0, t1, h0, to(8))};
+  return {
+      chapter_dopri5_method(f, t0, y0, t1, h0, tol),
+      embedded_pair_method(cash_karp(), look::cash_karp + " pt 5", f, t0, y0, t1, h0, tol),
+      embedded_pair_method(bogacki_shampine(), look::bogacki_shampine + " pt 9", f, t0, y0, t1, h0, to(6)),
+      gsl_method(GslStepper::rkck, f, t0, y0, t1, h0, tol),
+      gsl_method(GslStepper::rkf45, f, t0, y0, t1, h0, tol),
+      gsl_method(GslStepper::rk8pd, f, t0, y0, t1, h0, tol),
+      boost_dopri5_method(f, t0, y0, t1, h0, tol),
+      fixed_rk4_method(f, t0, y0, t1, {3e3, 1e4, 3e4, 1e5, 3e5, 1e6}),
+      step_doubling_method(DoublingBase::euler, f, t0, y0, t1, h0, to(5)),
+      step_doubling_method(DoublingBase::midpoint, f, t0, y0, t1, h0, to(8))};
 }
 
 /// The methods of every_work_method whose exercises are written: each is tried once at its loosest
 /// tolerance, and the report names every other one and the exercise it waits for.
 template <int N, class Rhs>
-std::vector<WorkMethod<N>> all_work_methods(Report& report, const Rhs& f, double t0, const Vec<N>& y0, double t1,
-                                            double h0) {
+std::vector<WorkMethod<N>> all_work_methods(Report& report, const Rhs& f, double t0, const Vec<N>& y0,
+                                            double t1, double h0) {
   std::vector<WorkMethod<N>> written;
   const ProgressWeight uncounted(0);  // the probes are not the diagram's work (progress.hpp)
   for (auto& method : every_work_method(f, t0, y0, t1, h0))

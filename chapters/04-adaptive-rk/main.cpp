@@ -30,8 +30,8 @@ void tableaus_checked(kit::Report& report) {
   report.print("Butcher tableaus, checked in long double (order conditions up to order 5):\n");
   auto table = report.table("tableaus", kit::tableau_columns());
   using kit::Nodes;
-  for (const auto* t : {&kit::cash_karp(), &kit::cash_karp_as_printed(), &kit::dormand_prince(),
-                        &kit::bogacki_shampine()}) {
+  for (const auto* t :
+       {&kit::cash_karp(), &kit::cash_karp_as_printed(), &kit::dormand_prince(), &kit::bogacki_shampine()}) {
     const auto order = [&](const auto& b, Nodes nodes) { return long(kit::satisfied_order(*t, b, nodes)); };
     table.row({t->name, long(t->stages()), t->fsal, double(kit::row_sum_defect(*t)),
                order(t->b, Nodes::printed), order(t->b_hat, Nodes::printed), order(t->b, Nodes::row_sums),
@@ -46,18 +46,25 @@ Run one_run_in_detail(kit::Report& report, const kit::OrbitProblem& p, kit::Deta
   Run detail = kit::detailed_run(method, p.f, 0.0, p.y0, p.t_end, o);
   auto fields = kit::run_fields(detail.run, p.reference);
   const std::string note = detail.run.message.empty() ? "" : ": " + detail.run.message;
-  fields.insert(fields.end(), {{"method", detail.name}, {"problem", p.name}, {"rtol", o.rtol},
-                               {"atol", o.atol}, {"h0", o.h0}, {"note", note}});
-  report.say("detail", "\n{method} on {problem} (rtol = {rtol}, atol = {atol}, h0 = {h0}): {rhs_evals} "
+  fields.insert(fields.end(), {{"method", detail.name},
+                               {"problem", p.name},
+                               {"rtol", o.rtol},
+                               {"atol", o.atol},
+                               {"h0", o.h0},
+                               {"note", note}});
+  report.say("detail",
+             "\n{method} on {problem} (rtol = {rtol}, atol = {atol}, h0 = {h0}): {rhs_evals} "
              "evaluations, {accepted} accepted and {rejected} rejected steps, max |y(T) - reference| = "
-             "{error:.3g}; {status}{note}\n", fields);
+             "{error:.3g}; {status}{note}\n",
+             fields);
   return detail;
 }
 
 // 3. The lecture's step doubling with explicit Euler (p = 1), as written and guarded (ERRATA item 10).
 void step_doubling_and_its_trap(kit::Report& report, const kit::OrbitProblem& p, double e_min, double e_max,
                                 double h0) {
-  report.say("step_doubling", "\nStep doubling with explicit Euler, E_min = {e_min}, E_max = {e_max} "
+  report.say("step_doubling",
+             "\nStep doubling with explicit Euler, E_min = {e_min}, E_max = {e_max} "
              "(E_max/E_min = {ratio:.3g}; halving dt divides e by ~2^(p+1) = {factor}):\n",
              {{"e_min", e_min}, {"e_max", e_max}, {"ratio", e_max / e_min}, {"factor", 4L}});
   kit::StepDoubling options;
@@ -65,9 +72,11 @@ void step_doubling_and_its_trap(kit::Report& report, const kit::OrbitProblem& p,
   for (bool guarded : {false, true}) {
     options.guarded = guarded;
     const auto run = kit::counted_step_doubling(kit::DoublingBase::euler, p.f, 0.0, p.y0, p.t_end, options);
-    const std::string what = run.status != kit::RunStatus::finished ? "{status}: {message}\n"
-        : "{status}: {accepted} accepted, {rejected} rejected, {evaluations} evaluations, error {error:.3g}"
-          "\n";
+    const std::string what = run.status != kit::RunStatus::finished
+                                 ? "{status}: {message}\n"
+                                 : "{status}: {accepted} accepted, {rejected} rejected, {evaluations} "
+                                   "evaluations, error {error:.3g}"
+                                   "\n";
     report.say(guarded ? "step_doubling/guarded" : "step_doubling/lecture",
                (guarded ? "  guarded (accept e <= E_max): " : "  the lecture's loop: ") + what,
                kit::run_fields(run, p.reference, "evaluations"));
@@ -79,10 +88,11 @@ Curves work_against_precision(kit::ChapterApp& app, const kit::OrbitProblem& p, 
   const kit::WorkTiming timing;  // every run takes a turn in each round; its time is its fastest
   const auto methods = kit::all_work_methods(app.report(), p.f, 0.0, p.y0, p.t_end, h0);  // those written
   const Curves curves = kit::measure_work_precision(methods, p.reference, timing);
-  app.report().say("work_precision_timing", "\nWork against precision on {problem} (tolerance = rtol = atol; "
-                   "fixed RK4: the number of steps; time: fastest of {rounds} interleaved rounds):\n",
-                   {{"problem", p.name}, {"rounds", long(timing.rounds)},
-                    {"min_seconds", timing.min_seconds}});
+  app.report().say(
+      "work_precision_timing",
+      "\nWork against precision on {problem} (tolerance = rtol = atol; "
+      "fixed RK4: the number of steps; time: fastest of {rounds} interleaved rounds):\n",
+      {{"problem", p.name}, {"rounds", long(timing.rounds)}, {"min_seconds", timing.min_seconds}});
   kit::report_work_precision(app.report(), "work_precision", curves);
   return curves;
 }
@@ -112,8 +122,10 @@ int main(int argc, char** argv) {
                       "Chapter 4: adaptive Runge-Kutta against GSL and Boost.Odeint");
   app.add_choice("--problem", problem, "arenstorf (orbit, T = 17.07) or kepler (ellipse, T = 2π)",
                  kit::orbit_names.flags());
-  app.add_choice("--method", method, "the detailed run: dopri5 (production), cash-karp or bogacki-shampine "
-                 "(general driver)", kit::detailed_method_names.flags());
+  app.add_choice("--method", method,
+                 "the detailed run: dopri5 (production), cash-karp or bogacki-shampine "
+                 "(general driver)",
+                 kit::detailed_method_names.flags());
   app.add_real("--rtol", rtol, "relative tolerance of the detailed run", kit::between(1e-13, 1e-1));
   app.add_real("--atol", atol, "absolute tolerance of the detailed run, units of y",
                kit::between(1e-13, 1e-1));
@@ -128,8 +140,8 @@ int main(int argc, char** argv) {
     const kit::DetailedMethod detailed = kit::detailed_method_names.parse(method).value();
     const kit::EmbeddedOptions options{rtol, atol, h0, 5'000'000};
     tableaus_checked(app.report());  // each section runs once its exercises (4.1–4.3) are written
-    const auto detail = app.section("one run", [&] { return one_run_in_detail(app.report(), p, detailed,
-                                                                              options); });
+    const auto detail =
+        app.section("one run", [&] { return one_run_in_detail(app.report(), p, detailed, options); });
     app.section("step doubling", [&] { step_doubling_and_its_trap(app.report(), p, e_min, e_max, h0); });
     const auto curves = app.section("work-precision", [&] { return work_against_precision(app, p, h0); });
     const auto vdp = app.section("stiffness", [&] { return stiffness(app.report(), mu); });  // DOPRI5's

@@ -12,7 +12,6 @@
 
 namespace kit {
 
-void report_work_precision(Report& report, std::string_view section,
-                           const std::vector<WorkCurve>& curves);
+void report_work_precision(Report& report, std::string_view section, const std::vector<WorkCurve>& curves);
 
 }  // namespace kit

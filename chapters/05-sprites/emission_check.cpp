@@ -4,8 +4,8 @@
 
 namespace kit {
 
-std::vector<AttributeDraws> measure_emission(const Emitter& emitter, SampleParticle sample, std::uint64_t seed,
-                                             int n) {
+std::vector<AttributeDraws> measure_emission(const Emitter& emitter, SampleParticle sample,
+                                             std::uint64_t seed, int n) {
   std::vector<AttributeDraws> out{{"speed [m/s]", emitter.speed.mean, emitter.speed.variance},
                                   {"lifetime [s]", emitter.lifetime.mean, emitter.lifetime.variance},
                                   {"size [m]", emitter.size.mean, emitter.size.variance},

@@ -11,13 +11,13 @@
 namespace kit {
 
 struct AttributeDraws {
-  std::string name;            ///< "speed [m/s]", "lifetime [s]", "size [m]", "alpha"
-  double mean = 0, half_width = 0;                    ///< the scene's
-  double drawn_mean = 0, drawn_half_width = 0;         ///< measured over the draws
+  std::string name;                             ///< "speed [m/s]", "lifetime [s]", "size [m]", "alpha"
+  double mean = 0, half_width = 0;              ///< the scene's
+  double drawn_mean = 0, drawn_half_width = 0;  ///< measured over the draws
 };
 
 /// `n` particles of `emitter` drawn by `sample` with a generator seeded by `seed`.
-std::vector<AttributeDraws> measure_emission(const Emitter& emitter, SampleParticle sample, std::uint64_t seed,
-                                             int n = 20000);
+std::vector<AttributeDraws> measure_emission(const Emitter& emitter, SampleParticle sample,
+                                             std::uint64_t seed, int n = 20000);
 
 }  // namespace kit

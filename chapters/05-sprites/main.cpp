@@ -28,7 +28,8 @@ void falls_under_gravity(kit::ChapterApp& app, const kit::SpriteScene& scene,
                          const kit::SpriteRunOptions& run) {
   const kit::DragProblem mean = kit::mean_particle(scene);
   const kit::Pinhole camera(scene.camera, run.width, run.height);
-  app.report().say("trade", "1. The mean particle of '{scene}' over its life of {t:.3g} s (k = {k} 1/s), "
+  app.report().say("trade",
+                   "1. The mean particle of '{scene}' over its life of {t:.3g} s (k = {k} 1/s), "
                    "against the closed form x(t) of gravity plus drag:\n",
                    {{"scene", scene.name}, {"t", mean.t_end}, {"k", mean.drag}});
   auto table = app.report().table("integrators", kit::integrator_columns());
@@ -40,9 +41,10 @@ void falls_under_gravity(kit::ChapterApp& app, const kit::SpriteScene& scene,
       if (r.dt * mean.drag < 0.5 && r.error > kit::trade_roundoff(r))
         dts.push_back(r.dt), errors.push_back(r.error);
     const kit::TradeRun at_fps = kit::trade_runs(mean, i, {1.0 / run.fps}).front();
-    table.row(kit::flag_name(i), {std::string(kit::display_name(i)), long(kit::order(i)),
-              dts.size() > 2 ? kit::ReportValue(kit::fit_loglog(dts, errors).slope) : kit::ReportValue{},
-              at_fps.error, kit::pixels_between(camera, at_fps.position, at_fps.exact)});
+    table.row(kit::flag_name(i),
+              {std::string(kit::display_name(i)), long(kit::order(i)),
+               dts.size() > 2 ? kit::ReportValue(kit::fit_loglog(dts, errors).slope) : kit::ReportValue{},
+               at_fps.error, kit::pixels_between(camera, at_fps.position, at_fps.exact)});
   }
   table.print();
   app.report().print("All four cost the same per particle-step (one affine map per axis); the exact step "
@@ -69,7 +71,8 @@ kit::SpriteRecording lives_and_dies(kit::ChapterApp& app, const kit::SpriteScene
   kit::say_sprite_counts(app.report(), rec, scene.name, run);
   if (rec.diverged_at >= 0)
     app.diverged("scene", fmt::format("a position became infinite at frame {} (Δt = 1/{} s); the frames "
-                                      "so far are kept", rec.diverged_at, run.fps));
+                                      "so far are kept",
+                                      rec.diverged_at, run.fps));
   app.figure(kit::counts_figure(rec, run.fps, scene.name));
   return rec;
 }
@@ -90,9 +93,9 @@ void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
     app.summary()["figures"]["animation"].push_back(file.string());
     movie.append(" ").append(file.string());  // not " " + …: a false -Wrestrict alarm of GCC 12
   }
-  app.report().say("animation", "{files}\nPlay the frames: gnuplot -persist {player}\n",
-                   {{"files", made->movie.files.empty() ? made->movie.note : movie},
-                    {"player", made->player.string()}});
+  app.report().say(
+      "animation", "{files}\nPlay the frames: gnuplot -persist {player}\n",
+      {{"files", made->movie.files.empty() ? made->movie.note : movie}, {"player", made->player.string()}});
   if (app.options().show) app.report().print(kit::show_player(made->player) + "\n");
 }
 

@@ -12,10 +12,14 @@ namespace kit {
 namespace {
 std::string style(Integrator i) {
   switch (i) {
-    case Integrator::explicit_euler: return look::explicit_euler;
-    case Integrator::symplectic_euler: return look::symplectic_euler;
-    case Integrator::midpoint: return look::midpoint;
-    case Integrator::exact: return look::exact;
+    case Integrator::explicit_euler:
+      return look::explicit_euler;
+    case Integrator::symplectic_euler:
+      return look::symplectic_euler;
+    case Integrator::midpoint:
+      return look::midpoint;
+    case Integrator::exact:
+      return look::exact;
   }
   return look::highlight;
 }
@@ -28,10 +32,12 @@ double pixels_between(const Pinhole& camera, const Vec3& a, const Vec3& b) {
 }
 
 Figure trade_figure(const TradeCurves& curves, const Pinhole& camera, double fps, const std::string& scene) {
-  Figure fig("trade", fmt::format("Speed against accuracy: the mean particle of '{}' at the end of its life", scene));
+  Figure fig("trade",
+             fmt::format("Speed against accuracy: the mean particle of '{}' at the end of its life", scene));
   fig.height_in = 6.5;
-  auto& metres = fig.panel("steps per second of animation, 1/Δt [1/s] (the cost: all four cost the same per step)",
-                           "position error |x_n − x(t)| [m]", "error against the closed form");
+  auto& metres =
+      fig.panel("steps per second of animation, 1/Δt [1/s] (the cost: all four cost the same per step)",
+                "position error |x_n − x(t)| [m]", "error against the closed form");
   auto& pixels = fig.panel("steps per second of animation, 1/Δt [1/s]",
                            fmt::format("error on screen [px], {}×{}", camera.width(), camera.height()),
                            "what the error means on screen (default camera)");
@@ -54,8 +60,10 @@ Figure trade_figure(const TradeCurves& curves, const Pinhole& camera, double fps
   }
   pixels.line("one pixel", {lo, hi}, {1.0, 1.0}, look::guide);
   for (Panel* p : {&metres, &pixels}) {
-    p->commands.push_back(fmt::format("set arrow from {0},graph 0 to {0},graph 1 nohead {1}", fps, look::guide));
-    p->commands.push_back(fmt::format("set label '--fps {}' at {},graph 0.92 offset 0.5,0 {}", fps, fps, look::guide_label));
+    p->commands.push_back(
+        fmt::format("set arrow from {0},graph 0 to {0},graph 1 nohead {1}", fps, look::guide));
+    p->commands.push_back(
+        fmt::format("set label '--fps {}' at {},graph 0.92 offset 0.5,0 {}", fps, fps, look::guide_label));
   }
   return fig;
 }
@@ -75,8 +83,8 @@ Figure counts_figure(const SpriteRecording& rec, double fps, const std::string& 
   p.line("dead so far", frame, dead, "lw 2 lc rgb '#d62728'");
   p.line("alive", frame, alive, "lw 3 lc rgb '#2ca02c'");
   if (rec.warmup_frames > 0) {  // the frames before this line are simulated, not rendered
-    p.commands.push_back(fmt::format("set arrow from {0},graph 0 to {0},graph 1 nohead {1}", rec.warmup_frames,
-                                     look::guide));
+    p.commands.push_back(
+        fmt::format("set arrow from {0},graph 0 to {0},graph 1 nohead {1}", rec.warmup_frames, look::guide));
     p.commands.push_back(fmt::format("set label 'first rendered frame' at {},graph 0.5 offset 0.5,0 {}",
                                      rec.warmup_frames, look::guide_label));
   }

@@ -3,9 +3,9 @@
 #include <climits>
 #include <map>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <CLI/CLI.hpp>
 
 #include <kit/app/scene_flag.hpp>
 #include <kit/base/usage.hpp>
@@ -16,17 +16,20 @@ namespace kit {
 namespace {
 Integrator integrator_named(const std::string& name) {
   if (const auto integrator = integrator_names.parse(name)) return *integrator;
-  throw UsageError(fmt::format("--integrator: '{}' is not one of {}", name, fmt::join(integrator_names.flags(), ", ")));
+  throw UsageError(
+      fmt::format("--integrator: '{}' is not one of {}", name, fmt::join(integrator_names.flags(), ", ")));
 }
 
 }  // namespace
 
 void add_sprite_flags(ChapterApp& app, SpriteFlags& f) {
   app.cli()
-      .add_option("--scene", f.scene, "scene: a name under chapters/05-sprites/scenes/ or a path to a .toml file")
+      .add_option("--scene", f.scene,
+                  "scene: a name under chapters/05-sprites/scenes/ or a path to a .toml file")
       ->type_name("NAME|FILE");
   app.add_count("--frames", f.frames, "frames to run (default: the scene's)", 1, 20000);
-  app.add_real("--fps", f.fps, "frames per second, Δt = 1/fps [1/s] (default: the scene's)", between(1, 1000));
+  app.add_real("--fps", f.fps, "frames per second, Δt = 1/fps [1/s] (default: the scene's)",
+               between(1, 1000));
   app.add_count("--seed", f.seed, "random seed: the same seed gives the same frames and data", 0, LONG_MAX);
   app.add_choice("--integrator", f.integrator,
                  "euler, symplectic, midpoint or exact (the closed form of gravity plus drag)",
@@ -58,7 +61,8 @@ double check_textures(const SpriteScene& scene) {
   return total;
 }
 
-SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene, const std::filesystem::path& frame_dir) {
+SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene,
+                             const std::filesystem::path& frame_dir) {
   SpriteRunOptions o;
   o.frames = flags.frames > 0 ? flags.frames : scene.frames;
   o.fps = flags.fps > 0 ? flags.fps : scene.fps;
@@ -73,8 +77,12 @@ SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene,
 }
 
 nlohmann::json run_summary(const SpriteScene& scene, const SpriteRunOptions& run, const SpriteFlags& flags) {
-  return {{"name", scene.name}, {"file", scene.file}, {"frames", run.frames}, {"fps", run.fps},
-          {"max_particles", run.max_particles}, {"integrator", flags.integrator},
+  return {{"name", scene.name},
+          {"file", scene.file},
+          {"frames", run.frames},
+          {"fps", run.fps},
+          {"max_particles", run.max_particles},
+          {"integrator", flags.integrator},
           {"warmup_frames", run.warmup_frames}};
 }
 

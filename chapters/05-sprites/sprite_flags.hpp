@@ -33,7 +33,8 @@ SpriteScene load_scene_flag(const SpriteFlags& flags, const std::filesystem::pat
 double check_textures(const SpriteScene& scene);
 
 /// The run the flags ask for on `scene`, frames written under `frame_dir` (empty: none).
-SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene, const std::filesystem::path& frame_dir);
+SpriteRunOptions run_options(const SpriteFlags& flags, const SpriteScene& scene,
+                             const std::filesystem::path& frame_dir);
 
 /// The summary's "scene" object: the scene, its file, and what the run uses of it.
 nlohmann::json run_summary(const SpriteScene& scene, const SpriteRunOptions& run, const SpriteFlags& flags);

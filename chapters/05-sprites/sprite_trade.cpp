@@ -25,7 +25,8 @@ DragProblem mean_particle(const SpriteScene& scene) {
   return p;
 }
 
-std::vector<TradeRun> trade_runs(const DragProblem& problem, Integrator integrator, const std::vector<double>& dts) {
+std::vector<TradeRun> trade_runs(const DragProblem& problem, Integrator integrator,
+                                 const std::vector<double>& dts) {
   std::vector<TradeRun> runs;
   for (const double dt : dts) {
     TradeRun run;

@@ -17,9 +17,9 @@ struct DragProblem {
   Vec3 x0{0, 0, 0};       ///< [m]
   Vec3 v0{0, 0, 0};       ///< [m/s]
   Vec3 gravity{0, 0, 0};  ///< [m/s²]
-  double drag = 0;         ///< k [1/s]
+  double drag = 0;        ///< k [1/s]
   Vec3 wind{0, 0, 0};     ///< [m/s]
-  double t_end = 1;        ///< [s]
+  double t_end = 1;       ///< [s]
 
   /// The exact position at time t [s].
   Vec3 exact_position(double t) const;
@@ -33,14 +33,15 @@ DragProblem mean_particle(const SpriteScene& scene);
 
 /// One run of the trade: n = round(t_end/Δt) steps, error |x_n − x(n·Δt)|.
 struct TradeRun {
-  double dt = 0;             ///< [s]
-  long steps = 0;            ///< per particle over the horizon
-  double error = 0;          ///< [m]
-  Vec3 position{0, 0, 0};   ///< x_n [m]
-  Vec3 exact{0, 0, 0};      ///< x(n·Δt) [m]
+  double dt = 0;           ///< [s]
+  long steps = 0;          ///< per particle over the horizon
+  double error = 0;        ///< [m]
+  Vec3 position{0, 0, 0};  ///< x_n [m]
+  Vec3 exact{0, 0, 0};     ///< x(n·Δt) [m]
 };
 /// `integrator` on `problem` at each of `dts`.
-std::vector<TradeRun> trade_runs(const DragProblem& problem, Integrator integrator, const std::vector<double>& dts);
+std::vector<TradeRun> trade_runs(const DragProblem& problem, Integrator integrator,
+                                 const std::vector<double>& dts);
 
 /// An error below this is round-off, not the integrator's truncation: 100 × ε × steps × the
 /// position's size, in [m]. Orders are fitted above it only.

@@ -13,10 +13,14 @@ namespace kit {
 
 std::string cloth_style(ClothIntegrator integrator) {
   switch (integrator) {
-    case ClothIntegrator::explicit_euler: return look::explicit_euler;
-    case ClothIntegrator::symplectic_euler: return look::symplectic_euler;
-    case ClothIntegrator::midpoint: return look::midpoint;
-    case ClothIntegrator::rk4: return look::rk4;
+    case ClothIntegrator::explicit_euler:
+      return look::explicit_euler;
+    case ClothIntegrator::symplectic_euler:
+      return look::symplectic_euler;
+    case ClothIntegrator::midpoint:
+      return look::midpoint;
+    case ClothIntegrator::rk4:
+      return look::rk4;
   }
   return look::highlight;
 }
@@ -28,7 +32,8 @@ Figure cloth_energy_figure(const ClothRuns& runs, double dt, const std::string& 
   bool off_scale = false;
   for (const auto& [integrator, rec] : runs) {
     std::vector<double> t, e;
-    for (const ClothSample& s : rec.samples) t.push_back(s.t), e.push_back(s.total() - rec.samples.front().total());
+    for (const ClothSample& s : rec.samples)
+      t.push_back(s.t), e.push_back(s.total() - rec.samples.front().total());
     std::string title = display_name(integrator);
     if (rec.exploded_at >= 0) {
       title += fmt::format(" (explodes at t = {:.3g} s)", rec.exploded_at);
@@ -56,7 +61,8 @@ Figure cloth_energy_figure(const ClothRuns& runs, double dt, const std::string& 
       const double change = rec.samples.back().total() - rec.samples.front().total();
       if (rec.exploded_at >= 0 || std::abs(change) > 10 * std::abs(loss)) continue;
       std::vector<double> t, e;
-      for (const ClothSample& s : rec.samples) t.push_back(s.t), e.push_back(s.total() - rec.samples.front().total());
+      for (const ClothSample& s : rec.samples)
+        t.push_back(s.t), e.push_back(s.total() - rec.samples.front().total());
       zoom.add({display_name(integrator), t, e, "lines", cloth_style(integrator) + " lw 2"});
     }
   }
@@ -68,13 +74,15 @@ Figure cloth_energy_figure(const ClothRuns& runs, double dt, const std::string& 
 
 Figure cloth_strain_figure(const ClothRecording& free, const ClothRecording& limited, double max_strain,
                            const std::string& scene) {
-  Figure fig("strain", fmt::format("The super-elastic effect in '{}': the most stretched structural spring", scene));
+  Figure fig("strain",
+             fmt::format("The super-elastic effect in '{}': the most stretched structural spring", scene));
   auto& p = fig.panel("time t [s]", "largest stretch (l − L_0)/L_0 [%]  (> 0: longer than at rest)");
   for (const auto* rec : {&free, &limited}) {
     std::vector<double> t, strain;
     for (const ClothSample& s : rec->samples) t.push_back(s.t), strain.push_back(100 * s.strain);
-    p.add({rec == &free ? "springs alone" : fmt::format("with Provot's strain limit of {:.3g}%", 100 * max_strain), t,
-           strain, "lines", (rec == &free ? look::unstable : look::stable) + " lw 2"});
+    p.add({rec == &free ? "springs alone"
+                        : fmt::format("with Provot's strain limit of {:.3g}%", 100 * max_strain),
+           t, strain, "lines", (rec == &free ? look::unstable : look::stable) + " lw 2"});
   }
   if (!free.samples.empty()) {
     p.line("the limit", {0, free.samples.back().t}, {100 * max_strain, 100 * max_strain}, look::guide);
@@ -84,7 +92,9 @@ Figure cloth_strain_figure(const ClothRecording& free, const ClothRecording& lim
 }
 
 Figure cloth_stability_figure(const std::vector<StabilityCase>& rows, const std::string& scene) {
-  Figure fig("stability", fmt::format("The largest stable Δt on '{}': measured (filled) against c/ω_{{max}} (open)", scene));
+  Figure fig(
+      "stability",
+      fmt::format("The largest stable Δt on '{}': measured (filled) against c/ω_{{max}} (open)", scene));
   auto& p = fig.panel("spring layout", "largest stable step Δt_{max} [s]");
   p.logy = true;
   std::vector<std::string> layouts;
@@ -108,24 +118,33 @@ Figure cloth_stability_figure(const std::vector<StabilityCase>& rows, const std:
     const double shift = 0.12 * (double(int(integrator)) - 1.5);
     for (const auto& row : rows) {
       if (row.integrator != integrator) continue;
-      const double column = double(std::find(layouts.begin(), layouts.end(), row.layout) - layouts.begin()) + shift;
-      if (row.result.measured.estimate() > 0) x.push_back(column), measured.push_back(row.result.measured.estimate());
+      const double column =
+          double(std::find(layouts.begin(), layouts.end(), row.layout) - layouts.begin()) + shift;
+      if (row.result.measured.estimate() > 0)
+        x.push_back(column), measured.push_back(row.result.measured.estimate());
       if (row.result.predicted > 0) xp.push_back(column), predicted.push_back(row.result.predicted);
     }
-    if (!x.empty()) p.points(std::string(display_name(integrator)) + ", measured", x, measured, cloth_style(integrator) + " pt 7 ps 1.4");
-    if (!xp.empty()) p.points(std::string(display_name(integrator)) + ", predicted", xp, predicted, cloth_style(integrator) + " pt 6 ps 2.2 lw 2");
+    if (!x.empty())
+      p.points(std::string(display_name(integrator)) + ", measured", x, measured,
+               cloth_style(integrator) + " pt 7 ps 1.4");
+    if (!xp.empty())
+      p.points(std::string(display_name(integrator)) + ", predicted", xp, predicted,
+               cloth_style(integrator) + " pt 6 ps 2.2 lw 2");
   }
   return fig;
 }
 
 Figure cloth_resolution_figure(const std::vector<StabilityAtResolution>& rows, const std::string& scene) {
-  Figure fig("resolution", fmt::format("'{}' at N nodes across, symplectic Euler: smaller steps, and many more of them", scene));
+  Figure fig(
+      "resolution",
+      fmt::format("'{}' at N nodes across, symplectic Euler: smaller steps, and many more of them", scene));
   fig.height_in = 6.5;
   auto& dt = fig.panel("nodes across N", "largest stable step Δt_{max} [s]", "the step shrinks like 1/N");
   auto& cost = fig.panel("nodes across N", "spring forces per simulated second", "the cost grows like N^3");
   std::vector<double> n, cells, measured, predicted, evaluations;
   for (const auto& r : rows) {
-    n.push_back(r.n), cells.push_back(r.n - 1), measured.push_back(r.measured.estimate()), predicted.push_back(r.predicted);
+    n.push_back(r.n), cells.push_back(r.n - 1), measured.push_back(r.measured.estimate()),
+        predicted.push_back(r.predicted);
     evaluations.push_back(r.spring_evaluations_per_second);
   }
   fig.left_edge = 0.1, fig.right_edge = 0.72;
@@ -156,15 +175,17 @@ Figure cloth_mesh_figure(const std::map<Hanging, std::vector<Sag>>& sags, double
   Figure fig("mesh", "Dépendance au maillage: one 1 m sheet hanging at rest, at N × N nodes");
   auto& p = fig.panel("nodes across N", "drop of the bottom edge's middle [mm]  (> 0: below its rest place)");
   p.logx = true;
-  const std::string styles[] = {look::stable + " lw 2", look::unstable + " lw 2", look::implicit_euler + " lw 2 dt 2",
-                                look::midpoint + " lw 2"};
+  const std::string styles[] = {look::stable + " lw 2", look::unstable + " lw 2",
+                                look::implicit_euler + " lw 2 dt 2", look::midpoint + " lw 2"};
   p.commands.push_back("set xrange [6:80]");
   p.commands.push_back("set xtics (8, 16, 32, 64)");
   p.commands.push_back("set format x '%g'");  // the node counts, not powers of ten
   double lo = INFINITY, hi = 0;
   for (const auto& [hanging, curve] : sags) {
     std::vector<double> n, drop;
-    for (const Sag& s : curve) n.push_back(s.n), drop.push_back(1e3 * s.drop), lo = std::min(lo, double(s.n)), hi = std::max(hi, double(s.n));
+    for (const Sag& s : curve)
+      n.push_back(s.n), drop.push_back(1e3 * s.drop), lo = std::min(lo, double(s.n)),
+                                                      hi = std::max(hi, double(s.n));
     p.add({describe(hanging), n, drop, "linespoints", styles[int(hanging)] + " pt 7"});
   }
   if (limit > 0 && hi > lo)

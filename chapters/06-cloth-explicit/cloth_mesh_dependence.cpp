@@ -12,10 +12,14 @@ namespace kit {
 
 const char* describe(Hanging hanging) {
   switch (hanging) {
-    case Hanging::top_edge: return "top edge pinned, same k";
-    case Hanging::corner_nodes: return "two corner nodes pinned, same k";
-    case Hanging::corner_segments: return "two corner eighths pinned, same k";
-    case Hanging::top_edge_k_by_n: return "top edge pinned, k ∝ N (a rope's rule)";
+    case Hanging::top_edge:
+      return "top edge pinned, same k";
+    case Hanging::corner_nodes:
+      return "two corner nodes pinned, same k";
+    case Hanging::corner_segments:
+      return "two corner eighths pinned, same k";
+    case Hanging::top_edge_k_by_n:
+      return "top edge pinned, k ∝ N (a rope's rule)";
   }
   return "";
 }
@@ -33,9 +37,10 @@ ClothScene hanging_sheet(int n, Hanging hanging, double k) {
   scene.gravity = Vec3(0, -9.81, 0);
   for (int i = 0; i < n; ++i) {
     const double along = double(i) / (n - 1);  // position on the top edge, 0 to 1
-    const bool pinned = hanging == Hanging::top_edge || hanging == Hanging::top_edge_k_by_n ||
-                        (hanging == Hanging::corner_nodes && (i == 0 || i == n - 1)) ||
-                        (hanging == Hanging::corner_segments && (along <= 0.125 + 1e-12 || along >= 0.875 - 1e-12));
+    const bool pinned =
+        hanging == Hanging::top_edge || hanging == Hanging::top_edge_k_by_n ||
+        (hanging == Hanging::corner_nodes && (i == 0 || i == n - 1)) ||
+        (hanging == Hanging::corner_segments && (along <= 0.125 + 1e-12 || along >= 0.875 - 1e-12));
     if (pinned) scene.pins.push_back({i, 0});
   }
   return scene;
@@ -64,7 +69,8 @@ Sag hanging_sag(int n, Hanging hanging, ClothKernels kernels, long max_steps) {
 }
 
 MeshDependence measure_mesh_dependence(ClothKernels kernels, int finest_n) {
-  if (finest_n < 32) throw std::invalid_argument("measure_mesh_dependence: Richardson needs N = 8, 16 and 32 at least");
+  if (finest_n < 32)
+    throw std::invalid_argument("measure_mesh_dependence: Richardson needs N = 8, 16 and 32 at least");
   MeshDependence m;
   for (Hanging hanging : all_hangings)
     for (int n = 8; n <= finest_n; n *= 2) m.sags[hanging].push_back(hanging_sag(n, hanging, kernels));
@@ -75,11 +81,13 @@ MeshDependence measure_mesh_dependence(ClothKernels kernels, int finest_n) {
   return m;
 }
 
-std::string describe(const Convergence& c, const std::array<int, 3>& n, double unit, const std::string& unit_name) {
+std::string describe(const Convergence& c, const std::array<int, 3>& n, double unit,
+                     const std::string& unit_name) {
   if (!c.converges)
-    return fmt::format("does not converge over N = {}, {}, {} (the differences do not shrink)", n[0], n[1], n[2]);
-  return fmt::format("converges at order {:.2f} to {:.4g} {}, {:.2g}% away at N = {}", c.order, unit * c.limit,
-                     unit_name, 100 * c.remaining, n[2]);
+    return fmt::format("does not converge over N = {}, {}, {} (the differences do not shrink)", n[0], n[1],
+                       n[2]);
+  return fmt::format("converges at order {:.2f} to {:.4g} {}, {:.2g}% away at N = {}", c.order,
+                     unit * c.limit, unit_name, 100 * c.remaining, n[2]);
 }
 
 }  // namespace kit

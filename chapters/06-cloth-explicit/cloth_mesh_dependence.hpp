@@ -37,13 +37,14 @@ struct Sag {
   double drop = 0;         ///< how far the middle of the bottom edge sits below its rest place [m]
   double peak_strain = 0;  ///< the largest structural stretch at rest
   long steps = 0;
-  bool settled = false;    ///< false: the step budget ran out first
+  bool settled = false;  ///< false: the step budget ran out first
 };
 Sag hanging_sag(int n, Hanging hanging, ClothKernels kernels, long max_steps = 400000);
 
 /// "converges at order 1.03 to 12.48 mm, 0.8% away at N = 64", or that it does not over the
 /// three resolutions `n` (coarse to fine); the limit shown times `unit` in `unit_name`.
-std::string describe(const Convergence& c, const std::array<int, 3>& n, double unit, const std::string& unit_name);
+std::string describe(const Convergence& c, const std::array<int, 3>& n, double unit,
+                     const std::string& unit_name);
 
 /// The chapter's experiment: every way of holding the sheet at N = 8, 16, 32, … up to `finest_n`
 /// (the chapter's 64; at least 32), and Richardson's estimate for the top edge from the finest

@@ -42,10 +42,12 @@ kit::Springs coupled_springs(ChapterApp& app, const ClothScene& scene, ClothKern
 void favourite_scheme(ChapterApp& app, const ClothScene& scene, ClothKernels kernels) {
   const bool quick = app.options().quick;
   const auto cases = kit::stability_cases(scene, quick ? 8 : 16, kernels, 1e-4);
-  app.report().print(fmt::format("3. The largest stable step at {} nodes across, every spring at the structural K. "
-                     "Stable: no mode grows. Undamped, explicit Euler and midpoint grow at every Δt; damped "
-                     "along the springs (μ = τK), explicit Euler holds for Δt < τ while every mode is "
-                     "underdamped:\n", quick ? 8 : 16));
+  app.report().print(
+      fmt::format("3. The largest stable step at {} nodes across, every spring at the structural K. "
+                  "Stable: no mode grows. Undamped, explicit Euler and midpoint grow at every Δt; damped "
+                  "along the springs (μ = τK), explicit Euler holds for Δt < τ while every mode is "
+                  "underdamped:\n",
+                  quick ? 8 : 16));
   kit::print_stability_table(app.report(), cases);
   app.figure(kit::cloth_stability_figure(cases, scene.name));
   std::vector<kit::StabilityAtResolution> sweep;
@@ -81,14 +83,17 @@ void super_elastic(ChapterApp& app, const ClothScene& scene, const kit::Springs&
 // 6. "Vêtement = Tissu + collisions": the chosen run's contacts, its frames, meshes and animation.
 void garment(ChapterApp& app, const ClothScene& scene, const ClothRecording& rec,
              const kit::ClothOutputOptions& output) {
-  app.report().say("contacts", "6. Contacts: {tests} node tests, {contacts} nodes pushed out; the deepest a "
+  app.report().say("contacts",
+                   "6. Contacts: {tests} node tests, {contacts} nodes pushed out; the deepest a "
                    "node sat inside a collider after a step: {deepest:.2e} m.\n",
-                   {{"tests", rec.work.sphere_tests + rec.work.ground_tests}, {"contacts", rec.work.contacts},
+                   {{"tests", rec.work.sphere_tests + rec.work.ground_tests},
+                    {"contacts", rec.work.contacts},
                     {"deepest", rec.deepest}});
   if (output.dir.empty()) return;
   const kit::ClothOutput made = kit::write_cloth_output(scene, rec, output);
-  app.report().say("frames", "{frames} frames and OBJ meshes in {dir}; {movie}\n", {{"frames",
-                   long(made.frames.size())}, {"dir", output.dir.string()}, {"movie", made.note}});
+  app.report().say(
+      "frames", "{frames} frames and OBJ meshes in {dir}; {movie}\n",
+      {{"frames", long(made.frames.size())}, {"dir", output.dir.string()}, {"movie", made.note}});
   for (const auto& file : made.movies) app.summary()["figures"]["animation"].push_back(file.string());
   if (app.options().show) app.report().print(kit::show_player(made.player) + "\n");
 }
@@ -99,10 +104,14 @@ void mesh_dependence(ChapterApp& app, ClothKernels kernels) {
   app.report().print("7. A 1 m sheet at rest, 0.2 kg/m², structural and shear springs of 50 N/m:\n");
   kit::print_mesh_table(app.report(), m.sags);
   const kit::Convergence& c = m.top_edge;
-  app.report().say("mesh_limit", "Top edge, same k: the drop {verdict}. With square cells a spring's K [N/m] "
+  app.report().say("mesh_limit",
+                   "Top edge, same k: the drop {verdict}. With square cells a spring's K [N/m] "
                    "is the sheet's stretch modulus; point pins have no limit.\n",
-                   {{"verdict", kit::describe(c, m.finest, 1e3, "mm")}, {"order", c.order}, {"limit", 1e3 * c.limit},
-                    {"remaining", 100 * c.remaining}, {"converges", c.converges}});
+                   {{"verdict", kit::describe(c, m.finest, 1e3, "mm")},
+                    {"order", c.order},
+                    {"limit", 1e3 * c.limit},
+                    {"remaining", 100 * c.remaining},
+                    {"converges", c.converges}});
   app.figure(kit::cloth_mesh_figure(m.sags, m.top_edge.limit));
 }
 }  // namespace

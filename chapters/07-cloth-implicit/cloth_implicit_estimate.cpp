@@ -13,10 +13,12 @@ RunEstimate estimate_implicit_run(const ClothScene& scene, const ClothRunOptions
   const double springs = double(spring_count(scene.grid.nx, scene.grid.ny, scene.springs));
   const double nonzeros = 9 * (nodes + 2 * springs);  // a 3×3 block per node and two per spring
   e.steps = std::max(1.0, std::round(run.t_end / run.dt));
-  const double per_step = run.implicit ? springs * 150e-9 + cg_iterations * nonzeros * 2e-9 : springs * 6e-9 * stages(run.integrator);
+  const double per_step = run.implicit ? springs * 150e-9 + cg_iterations * nonzeros * 2e-9
+                                       : springs * 6e-9 * stages(run.integrator);
   const double newton = run.implicit == ImplicitMethod::newton ? run.implicit_settings.iterations : 1;
-  e.seconds_per_step = run.implicit == ImplicitMethod::liu ? run.implicit_settings.iterations * (springs * 20e-9 + nodes * 200e-9)
-                                                           : newton * per_step;
+  e.seconds_per_step = run.implicit == ImplicitMethod::liu
+                           ? run.implicit_settings.iterations * (springs * 20e-9 + nodes * 200e-9)
+                           : newton * per_step;
   // The matrix (value and column index), per-spring blocks (72 B), state and scratch, frames.
   e.bytes = nonzeros * 12 + springs * (72 + 61) + nodes * 30 * 24 + double(run.frames + 1) * nodes * 24;
   // --solver mg: its single-precision copy of A (52 B a block), the Galerkin plan (about five

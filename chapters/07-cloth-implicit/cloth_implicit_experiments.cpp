@@ -22,7 +22,8 @@ ClothScene test_sheet(const ClothScene& scene, int n, double stiffness) {
   if (sheet.pins.empty()) sheet.pins = {{0, -1}, {-1, -1}};
   double structural = 0;
   for (SpringKind kind : all_spring_kinds)
-    if (const auto& family = sheet.springs.family(kind); family && structural == 0) structural = family->stiffness;
+    if (const auto& family = sheet.springs.family(kind); family && structural == 0)
+      structural = family->stiffness;
   for (auto* family : {&sheet.springs.structural, &sheet.springs.shear, &sheet.springs.bend})
     if (*family) (*family)->stiffness *= stiffness / structural;
   return sheet;
@@ -48,9 +49,9 @@ long iterations_of(const ClothRecording& rec) {
 
 }  // namespace
 
-std::vector<StiffnessRow> stiffness_sweep(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                                          ImplicitSettings settings, const std::vector<double>& stiffnesses,
-                                          double h, double t_end) {
+std::vector<StiffnessRow> stiffness_sweep(const ClothScene& scene, ClothKernels kernels,
+                                          ImplicitKernels implicit, ImplicitSettings settings,
+                                          const std::vector<double>& stiffnesses, double h, double t_end) {
   settings.iterations = experiment_iterations;
   std::vector<StiffnessRow> rows;
   for (const double k : stiffnesses) {
@@ -64,7 +65,8 @@ std::vector<StiffnessRow> stiffness_sweep(const ClothScene& scene, ClothKernels 
     row.measured = measure_dt_max(springs_only(sheet), springs, kernels, ClothIntegrator::symplectic_euler,
                                   0.5 * row.predicted, 2 * row.predicted);
     for (const ImplicitMethod method : all_implicit_methods) {
-      const ClothRecording rec = run_cloth(sheet, springs, kernels, implicit_run(method, settings, implicit, h, t_end));
+      const ClothRecording rec =
+          run_cloth(sheet, springs, kernels, implicit_run(method, settings, implicit, h, t_end));
       ImplicitStability s;
       s.method = method;
       s.energy_change = rec.samples.back().total() - rec.samples.front().total();
@@ -97,17 +99,22 @@ Trade speed_accuracy_trade(const ClothScene& scene, ClothKernels kernels, Implic
   // The reference: RK4 at a twentieth of its stable step.
   ClothRunOptions fine;
   fine.integrator = ClothIntegrator::rk4;
-  fine.dt = trade.reference_dt = t_end / std::ceil(t_end / (0.05 * predicted_dt_max(ClothIntegrator::rk4, omega)));
-  const ClothRecording reference = run(fine, 200).first;  // 200 energy samples: the swing's largest kinetic energy
+  fine.dt = trade.reference_dt =
+      t_end / std::ceil(t_end / (0.05 * predicted_dt_max(ClothIntegrator::rk4, omega)));
+  const ClothRecording reference =
+      run(fine, 200).first;  // 200 energy samples: the swing's largest kinetic energy
   const NodeArray& x_ref = reference.frames.back();
   const double e_ref = reference.samples.back().total();
   trade.reference_energy_drift = std::abs(e_ref - reference.samples.front().total());
   // The sheet starts at rest and the reference keeps its energy (to round-off): the energy the
   // motion exchanges is the most kinetic energy the swing reaches, taken from gravity and springs.
-  for (const auto& sample : reference.samples) trade.energy_scale = std::max(trade.energy_scale, sample.kinetic);
+  for (const auto& sample : reference.samples)
+    trade.energy_scale = std::max(trade.energy_scale, sample.kinetic);
   trade.dt_max = measure_dt_max(springs_only(sheet), springs, kernels, ClothIntegrator::symplectic_euler,
-                                0.5 / omega, 4 / omega).estimate();
-  const auto add = [&](const std::string& name, const std::string& key, ClothRunOptions options, int iterations) {
+                                0.5 / omega, 4 / omega)
+                     .estimate();
+  const auto add = [&](const std::string& name, const std::string& key, ClothRunOptions options,
+                       int iterations) {
     const auto [rec, seconds] = run(options);
     SolverTradeRun r{name, key, options.dt, iterations};
     r.failed = rec.exploded_at >= 0;
@@ -123,14 +130,15 @@ Trade speed_accuracy_trade(const ClothScene& scene, ClothKernels kernels, Implic
     o.dt = t_end / std::ceil(t_end / (0.9 * trade.dt_max * std::ldexp(1.0, -k)));
     add(display_name(o.integrator), flag_name(o.integrator), o, 0);
     o.integrator = ClothIntegrator::rk4;
-    o.dt = t_end / std::ceil(t_end / (0.8 * predicted_dt_max(ClothIntegrator::rk4, omega) * std::ldexp(1.0, -k)));
+    o.dt = t_end /
+           std::ceil(t_end / (0.8 * predicted_dt_max(ClothIntegrator::rk4, omega) * std::ldexp(1.0, -k)));
     if (k <= 3) add(display_name(o.integrator), flag_name(o.integrator), o, 0);
   }
   for (const ImplicitMethod method : all_implicit_methods)
     for (int k = 0; k <= (method == ImplicitMethod::newton ? 1 : 5); ++k) {
       const int iterations = method == ImplicitMethod::liu ? settings.iterations : 0;
-      add(display_name(method), flag_name(method), implicit_run(method, settings, implicit, std::ldexp(1.0 / 30, -k), t_end),
-          iterations);
+      add(display_name(method), flag_name(method),
+          implicit_run(method, settings, implicit, std::ldexp(1.0 / 30, -k), t_end), iterations);
     }
   for (const int iterations : {1, 3, 30, 100}) {
     ImplicitSettings more = settings;
@@ -141,8 +149,9 @@ Trade speed_accuracy_trade(const ClothScene& scene, ClothKernels kernels, Implic
   return trade;
 }
 
-std::vector<SolverPoint> solver_behaviour(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                                          const ImplicitSettings& settings, const std::vector<double>& stiffnesses,
+std::vector<SolverPoint> solver_behaviour(const ClothScene& scene, ClothKernels kernels,
+                                          ImplicitKernels implicit, const ImplicitSettings& settings,
+                                          const std::vector<double>& stiffnesses,
                                           const std::vector<double>& steps, double t_end) {
   std::vector<SolverPoint> points;
   for (const double k : stiffnesses) {
@@ -152,8 +161,8 @@ std::vector<SolverPoint> solver_behaviour(const ClothScene& scene, ClothKernels 
       for (const double h : steps) {
         ImplicitSettings s = settings;
         s.solver = solver;
-        const ClothRecording rec =
-            run_cloth(sheet, springs, kernels, implicit_run(ImplicitMethod::linearised, s, implicit, h, t_end));
+        const ClothRecording rec = run_cloth(sheet, springs, kernels,
+                                             implicit_run(ImplicitMethod::linearised, s, implicit, h, t_end));
         const ImplicitWork& w = rec.implicit;
         points.push_back({solver, k, h, w.solves ? double(w.cg_iterations) / double(w.solves) : 0.0,
                           w.max_cg_iterations, w.unconverged_solves});
@@ -163,7 +172,8 @@ std::vector<SolverPoint> solver_behaviour(const ClothScene& scene, ClothKernels 
 }
 
 Linearisation linearisation_error(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                                  const ImplicitSettings& settings, double h, double stiffness, double warm_up) {
+                                  const ImplicitSettings& settings, double h, double stiffness,
+                                  double warm_up) {
   const ClothScene sheet = test_sheet(scene, 12, stiffness);
   ClothSystem cloth(sheet, kernels.build_springs(sheet.grid, sheet.springs), kernels);
   const double omega = omega_max(cloth.springs(), cloth.masses(), cloth.x, cloth.pins()).omega;
@@ -177,7 +187,8 @@ Linearisation linearisation_error(const ClothScene& scene, ClothKernels kernels,
   Linearisation l;
   l.h = h;
   try {
-    const NodeArray dv_lin = linearised.velocity_change(cloth, h), dv_newton = newton.velocity_change(cloth, h);
+    const NodeArray dv_lin = linearised.velocity_change(cloth, h),
+                    dv_newton = newton.velocity_change(cloth, h);
     l.difference = (dv_lin - dv_newton).norm() / dv_newton.norm();
   } catch (const SolveFailed& e) {
     l.failure = e.what();

@@ -34,9 +34,9 @@ struct ImplicitStability {
   std::string failure;
 };
 struct StiffnessRow {
-  double stiffness = 0;        ///< structural K [N/m]
-  double predicted = 0;        ///< symplectic Euler, 2/ω_max [s]
-  MeasuredDtMax measured;      ///< symplectic Euler
+  double stiffness = 0;    ///< structural K [N/m]
+  double predicted = 0;    ///< symplectic Euler, 2/ω_max [s]
+  MeasuredDtMax measured;  ///< symplectic Euler
   std::vector<ImplicitStability> implicit;
 };
 /// The sizes of chapter 7's fixed experiments: the lecture's, or --quick's (three stiffnesses in
@@ -44,9 +44,9 @@ struct StiffnessRow {
 /// whose runs take 8 to 30 steps where 1/480 s takes 120: under half of the work). Every step of
 /// the trade divides its duration: 1/3 s is 10 steps of 1/30 s, 320 of 1/960 s.
 struct ImplicitExperimentSizes {
-  std::vector<double> sweep_k{1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7};                 ///< the sweep's K [N/m]
-  double trade_t = 1;                                                          ///< the trade's duration [s]
-  std::vector<double> cg_k{1e2, 1e4, 1e6};                                     ///< the CG curves' K [N/m]
+  std::vector<double> sweep_k{1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7};  ///< the sweep's K [N/m]
+  double trade_t = 1;                                              ///< the trade's duration [s]
+  std::vector<double> cg_k{1e2, 1e4, 1e6};                         ///< the CG curves' K [N/m]
   std::vector<double> cg_h{1.0 / 30, 1.0 / 60, 1.0 / 120, 1.0 / 240, 1.0 / 480};  ///< and their h [s]
   static ImplicitExperimentSizes for_run(bool quick) {
     if (!quick) return {};
@@ -54,31 +54,32 @@ struct ImplicitExperimentSizes {
   }
 };
 
-std::vector<StiffnessRow> stiffness_sweep(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                                          ImplicitSettings settings,
-                                          const std::vector<double>& stiffnesses = {1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7},
+std::vector<StiffnessRow> stiffness_sweep(const ClothScene& scene, ClothKernels kernels,
+                                          ImplicitKernels implicit, ImplicitSettings settings,
+                                          const std::vector<double>& stiffnesses = {1e1, 1e2, 1e3, 1e4, 1e5,
+                                                                                    1e6, 1e7},
                                           double h = 1.0 / 30, double t_end = 1);
 
 /// Figures 2 and 3: one run of the test sheet, its error against the fine reference after t_end
 /// and the wall time it took.
 struct SolverTradeRun {
-  std::string method;   ///< display name
-  std::string key;      ///< the method's flag name, for styles and the summary
-  double dt = 0;        ///< [s]
-  int iterations = 0;   ///< Liu's local/global iterations (0: not Liu)
-  double error = 0;     ///< RMS node-position error at t_end [m] (inf when it blew up)
+  std::string method;      ///< display name
+  std::string key;         ///< the method's flag name, for styles and the summary
+  double dt = 0;           ///< [s]
+  int iterations = 0;      ///< Liu's local/global iterations (0: not Liu)
+  double error = 0;        ///< RMS node-position error at t_end [m] (inf when it blew up)
   double energy_lost = 0;  ///< E_ref(t_end) − E(t_end) [J]: > 0 the method removed energy
-  double seconds = 0;   ///< wall time of the run [s]
+  double seconds = 0;      ///< wall time of the run [s]
   bool failed = false;
 };
 struct Trade {
-  double stiffness = 0;       ///< structural K [N/m]
-  int n = 0;                  ///< nodes along the longer side
-  double t_end = 0;           ///< [s]
-  double reference_dt = 0;    ///< RK4's step for the reference, a twentieth of its limit [s]
+  double stiffness = 0;               ///< structural K [N/m]
+  int n = 0;                          ///< nodes along the longer side
+  double t_end = 0;                   ///< [s]
+  double reference_dt = 0;            ///< RK4's step for the reference, a twentieth of its limit [s]
   double reference_energy_drift = 0;  ///< |E(t_end) − E(0)| of the reference [J]
-  double energy_scale = 0;    ///< the reference's largest kinetic energy over [0, t_end], from rest [J]
-  double dt_max = 0;          ///< symplectic Euler's measured limit [s]
+  double energy_scale = 0;  ///< the reference's largest kinetic energy over [0, t_end], from rest [J]
+  double dt_max = 0;        ///< symplectic Euler's measured limit [s]
   std::vector<SolverTradeRun> runs;
 };
 Trade speed_accuracy_trade(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
@@ -88,27 +89,28 @@ Trade speed_accuracy_trade(const ClothScene& scene, ClothKernels kernels, Implic
 /// several K, with Eigen's CG (pins eliminated) and the filtered PCG (ex 7.3).
 struct SolverPoint {
   ImplicitSolver solver = ImplicitSolver::pcg;
-  double stiffness = 0;    ///< [N/m]
-  double h = 0;            ///< [s]
+  double stiffness = 0;  ///< [N/m]
+  double h = 0;          ///< [s]
   double mean_iterations = 0;
   long max_iterations = 0;
   long unconverged = 0;
 };
-std::vector<SolverPoint> solver_behaviour(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                                          const ImplicitSettings& settings, const std::vector<double>& stiffnesses,
+std::vector<SolverPoint> solver_behaviour(const ClothScene& scene, ClothKernels kernels,
+                                          ImplicitKernels implicit, const ImplicitSettings& settings,
+                                          const std::vector<double>& stiffnesses,
                                           const std::vector<double>& steps, double t_end = 0.25);
 
 /// The linearisation's error in one step: the test sheet swinging (after `warm_up` s of fine
 /// steps), one step of h by the linearised method and by Newton's.
 struct Linearisation {
   double h = 0;
-  double difference = 0;     ///< ‖Δv_lin − Δv_Newton‖ / ‖Δv_Newton‖
+  double difference = 0;  ///< ‖Δv_lin − Δv_Newton‖ / ‖Δv_Newton‖
   long newton_iterations = 0;
   double newton_residual = 0;  ///< ‖g‖ / ‖h f_n‖ at the end
   std::string failure;         ///< why a solve failed (--no-clamp); empty when both steps were taken
 };
 Linearisation linearisation_error(const ClothScene& scene, ClothKernels kernels, ImplicitKernels implicit,
-                                  const ImplicitSettings& settings,
-                                  double h, double stiffness = 1e4, double warm_up = 0.2);
+                                  const ImplicitSettings& settings, double h, double stiffness = 1e4,
+                                  double warm_up = 0.2);
 
 }  // namespace kit

@@ -28,8 +28,8 @@ ClothScene apply_implicit_cloth_flags(ClothScene scene, const ClothFlags& cloth)
 
 /// The run the flags ask for: implicit-euler by default at h = 1/30 s, or the named method (an
 /// explicit one at the scene's Δt unless --dt says otherwise).
-ClothRunOptions implicit_cloth_run(const ClothScene& scene, const ClothFlags& cloth, const ImplicitFlags& implicit,
-                                   ImplicitKernels kernels);
+ClothRunOptions implicit_cloth_run(const ClothScene& scene, const ClothFlags& cloth,
+                                   const ImplicitFlags& implicit, ImplicitKernels kernels);
 
 /// "--integrator implicit-euler, --dt 0.0333 s, ...": what sets the run's cost.
 std::string describe_implicit_run(const ClothScene& scene, const ClothRunOptions& run);

@@ -34,7 +34,8 @@ double lowest_eigenvalue(const Mat3& m) {
 }
 
 double max_abs(const SparseMatrix& m) {
-  return m.nonZeros() ? Eigen::Map<const Eigen::VectorXd>(m.valuePtr(), m.nonZeros()).cwiseAbs().maxCoeff() : 0.0;
+  return m.nonZeros() ? Eigen::Map<const Eigen::VectorXd>(m.valuePtr(), m.nonZeros()).cwiseAbs().maxCoeff()
+                      : 0.0;
 }
 
 std::vector<Mat3> blocks(const Springs& springs, const NodeArray& x, SpringStiffnessBlock block, bool clamp) {
@@ -76,14 +77,16 @@ JacobianCheck check_stiffness_block(SpringStiffnessBlock block, int springs) {
     c.finite_difference = std::max(c.finite_difference, (j - numeric).norm() / j.norm());
     c.asymmetry = std::max(c.asymmetry, (j - j.transpose()).norm() / j.norm());
     if (length < rest) {
-      c.clamped_lowest = std::min(c.clamped_lowest, lowest_eigenvalue(-block(xa, xb, rest, stiffness, true)) / stiffness);
+      c.clamped_lowest =
+          std::min(c.clamped_lowest, lowest_eigenvalue(-block(xa, xb, rest, stiffness, true)) / stiffness);
       c.unclamped_lowest = std::min(c.unclamped_lowest, lowest_eigenvalue(-j) / stiffness);
     }
   }
   return c;
 }
 
-AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, ImplicitKernels kernels, double h) {
+AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, ImplicitKernels kernels,
+                             double h) {
   AssemblyCheck c;
   const ClothGrid& grid = scene.grid;
   const Eigen::VectorXd masses = grid.node_masses();
@@ -93,7 +96,8 @@ AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, Im
   Random random(7);
   NodeArray x = grid.rest_positions(), v(x.rows(), 3), f;
   for (Eigen::Index i = 0; i < x.rows(); ++i)
-    for (int k = 0; k < 3; ++k) x(i, k) += 0.02 * grid.dx() * random.symmetric(), v(i, k) = 0.1 * random.symmetric();
+    for (int k = 0; k < 3; ++k)
+      x(i, k) += 0.02 * grid.dx() * random.symmetric(), v(i, k) = 0.1 * random.symmetric();
   forces(x, v, f);
   const std::vector<Mat3> stiffness = blocks(springs, x, kernels.stiffness_block, true);
   ImplicitMatrix kit_matrix(springs, x.rows(), pins);
@@ -101,14 +105,17 @@ AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, Im
   Eigen::VectorXd b, kit_b;
   const ImplicitSystemInput input{springs, x, v, f, masses, stiffness, scene.drag, h};
   time_per_call([&] { return kernels.assemble(input, a, b), 0; }, c.triplet_seconds);
-  time_per_call([&] { return kit_matrix.assemble(springs, x, stiffness, masses, scene.drag, h), 0; }, c.scatter_seconds);
+  time_per_call([&] { return kit_matrix.assemble(springs, x, stiffness, masses, scene.drag, h), 0; },
+                c.scatter_seconds);
   stiffness_times(springs, stiffness, v, kit_b);
   kit_b = h * (flatten(f) + h * kit_b);
   const SparseMatrix& ak = kit_matrix.matrix;
   c.rows = ak.rows(), c.nonzeros = ak.nonZeros();
   const double scale = max_abs(ak);
-  c.matrix_difference = a.rows() == ak.rows() && a.cols() == ak.cols() ? max_abs(SparseMatrix(a - ak)) / scale : INFINITY;
-  c.rhs_difference = b.size() == kit_b.size() ? (b - kit_b).cwiseAbs().maxCoeff() / kit_b.cwiseAbs().maxCoeff() : INFINITY;
+  c.matrix_difference =
+      a.rows() == ak.rows() && a.cols() == ak.cols() ? max_abs(SparseMatrix(a - ak)) / scale : INFINITY;
+  c.rhs_difference =
+      b.size() == kit_b.size() ? (b - kit_b).cwiseAbs().maxCoeff() / kit_b.cwiseAbs().maxCoeff() : INFINITY;
   c.asymmetry = max_abs(SparseMatrix(a - SparseMatrix(a.transpose()))) / scale;
   c.definite = cholesky_succeeds(a);
   // The sheet squeezed to 70% in its plane, a little rumpled: compressed springs everywhere.
@@ -129,28 +136,41 @@ AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, Im
 }
 
 void say_jacobian_check(Report& report, const JacobianCheck& c) {
-  report.say("jacobian", "1. Your ∂f_a/∂x_a on {n} random springs: {fd:.1e} from central differences "
-                   "of the force, symmetric to {asymmetry:.1e}. Compressed, the lowest eigenvalue of "
-                   "−∂f_a/∂x_a is {clamped:.3g} K clamped, {unclamped:.3g} K not (< 0: indefinite).\n\n",
-                   {{"n", long(c.springs)}, {"fd", c.finite_difference}, {"asymmetry", c.asymmetry},
-                    {"clamped", c.clamped_lowest}, {"unclamped", c.unclamped_lowest}});
+  report.say("jacobian",
+             "1. Your ∂f_a/∂x_a on {n} random springs: {fd:.1e} from central differences "
+             "of the force, symmetric to {asymmetry:.1e}. Compressed, the lowest eigenvalue of "
+             "−∂f_a/∂x_a is {clamped:.3g} K clamped, {unclamped:.3g} K not (< 0: indefinite).\n\n",
+             {{"n", long(c.springs)},
+              {"fd", c.finite_difference},
+              {"asymmetry", c.asymmetry},
+              {"clamped", c.clamped_lowest},
+              {"unclamped", c.unclamped_lowest}});
 }
 
 void say_assembly_check(Report& report, const AssemblyCheck& c, const std::string& scene, double h) {
   const PcgResult& pcg = c.unclamped_solve;
-  report.say("system", "2. '{scene}' at h = {h:.4g} s: A is {rows}×{rows}, {nonzeros} nonzeros. "
-                   "Your ex 7.2 matches the kit's scatter to {matrix:.1e} (A) and {rhs:.1e} (b); A is "
-                   "symmetric to {asymmetry:.1e} and {definite}. Your triplets took {triplet_ms:.3g} ms, the "
-                   "scatter {scatter_ms:.3g} ms. Squeezed to 70% without the clamp, A is {unclamped}; your "
-                   "PCG {outcome} after {iterations} iterations.\n\n",
-                   {{"scene", scene}, {"h", h}, {"rows", c.rows}, {"nonzeros", c.nonzeros},
-                    {"matrix", c.matrix_difference}, {"rhs", c.rhs_difference}, {"asymmetry", c.asymmetry},
-                    {"definite", c.definite ? "positive definite" : "NOT positive definite"},
-                    {"triplet_ms", 1e3 * c.triplet_seconds}, {"scatter_ms", 1e3 * c.scatter_seconds},
-                    {"unclamped", c.unclamped_definite ? "still definite" : "indefinite"},
-                    {"outcome", pcg.negative_curvature ? "stopped on negative curvature (cᵀAc ≤ 0)"
-                                : pcg.converged        ? "converged" : "did not converge"},
-                    {"iterations", long(pcg.iterations)}, {"negative_curvature", pcg.negative_curvature}});
+  report.say("system",
+             "2. '{scene}' at h = {h:.4g} s: A is {rows}×{rows}, {nonzeros} nonzeros. "
+             "Your ex 7.2 matches the kit's scatter to {matrix:.1e} (A) and {rhs:.1e} (b); A is "
+             "symmetric to {asymmetry:.1e} and {definite}. Your triplets took {triplet_ms:.3g} ms, the "
+             "scatter {scatter_ms:.3g} ms. Squeezed to 70% without the clamp, A is {unclamped}; your "
+             "PCG {outcome} after {iterations} iterations.\n\n",
+             {{"scene", scene},
+              {"h", h},
+              {"rows", c.rows},
+              {"nonzeros", c.nonzeros},
+              {"matrix", c.matrix_difference},
+              {"rhs", c.rhs_difference},
+              {"asymmetry", c.asymmetry},
+              {"definite", c.definite ? "positive definite" : "NOT positive definite"},
+              {"triplet_ms", 1e3 * c.triplet_seconds},
+              {"scatter_ms", 1e3 * c.scatter_seconds},
+              {"unclamped", c.unclamped_definite ? "still definite" : "indefinite"},
+              {"outcome", pcg.negative_curvature ? "stopped on negative curvature (cᵀAc ≤ 0)"
+                          : pcg.converged        ? "converged"
+                                                 : "did not converge"},
+              {"iterations", long(pcg.iterations)},
+              {"negative_curvature", pcg.negative_curvature}});
 }
 
 }  // namespace kit

@@ -14,9 +14,9 @@ namespace kit {
 struct JacobianCheck {
   int springs = 0;
   double finite_difference = 0;  ///< max ‖J − ∂f/∂x (central differences)‖ / ‖J‖, unclamped, all springs
-  double asymmetry = 0;          ///< max ‖J − Jᵀ‖ / ‖J‖
-  double clamped_lowest = 0;     ///< min eigenvalue of −J over compressed springs, clamped (≥ 0: definite)
-  double unclamped_lowest = 0;   ///< the same without the clamp (< 0: indefinite), in units of K
+  double asymmetry = 0;         ///< max ‖J − Jᵀ‖ / ‖J‖
+  double clamped_lowest = 0;    ///< min eigenvalue of −J over compressed springs, clamped (≥ 0: definite)
+  double unclamped_lowest = 0;  ///< the same without the clamp (< 0: indefinite), in units of K
 };
 JacobianCheck check_stiffness_block(SpringStiffnessBlock block, int springs = 1000);
 
@@ -24,16 +24,17 @@ JacobianCheck check_stiffness_block(SpringStiffnessBlock block, int springs = 10
 /// clamp's effect on a compressed sheet.
 struct AssemblyCheck {
   long rows = 0, nonzeros = 0;
-  double matrix_difference = 0;  ///< max |A_ex − A_kit| / max |A_kit|
-  double rhs_difference = 0;     ///< max |b_ex − b_kit| / max |b_kit|
-  double asymmetry = 0;          ///< max |A − Aᵀ| / max |A|
-  bool definite = false;         ///< a sparse Cholesky (LLT) of the clamped A succeeds
+  double matrix_difference = 0;    ///< max |A_ex − A_kit| / max |A_kit|
+  double rhs_difference = 0;       ///< max |b_ex − b_kit| / max |b_kit|
+  double asymmetry = 0;            ///< max |A − Aᵀ| / max |A|
+  bool definite = false;           ///< a sparse Cholesky (LLT) of the clamped A succeeds
   bool unclamped_definite = true;  ///< the same on the compressed sheet without the clamp
-  PcgResult unclamped_solve;     ///< ex 7.3 on that indefinite system (negative curvature expected)
-  double triplet_seconds = 0;    ///< ex 7.2's assembly, per call [s]
-  double scatter_seconds = 0;    ///< the kit's pattern scatter, per call [s]
+  PcgResult unclamped_solve;       ///< ex 7.3 on that indefinite system (negative curvature expected)
+  double triplet_seconds = 0;      ///< ex 7.2's assembly, per call [s]
+  double scatter_seconds = 0;      ///< the kit's pattern scatter, per call [s]
 };
-AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, ImplicitKernels kernels, double h);
+AssemblyCheck check_assembly(const ClothScene& scene, const Springs& springs, ImplicitKernels kernels,
+                             double h);
 
 /// Section 1's sentence: what ex 7.1's block is against central differences, and the clamp's effect.
 void say_jacobian_check(Report& report, const JacobianCheck& check);

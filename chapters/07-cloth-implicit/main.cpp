@@ -43,10 +43,13 @@ void large_steps(ChapterApp& app, const ClothScene& scene, ClothKernels kernels,
   app.figure(kit::cloth_stiffness_figure(rows, 1.0 / 30, scene.name));
   const kit::Linearisation l = kit::linearisation_error(scene, kernels, implicit, settings, 1.0 / 30);
   if (!l.failure.empty()) return app.report().print("One step mid-swing failed: " + l.failure + ".\n\n");
-  app.report().say("linearisation", "One step of h = {h:.4g} s mid-swing (K = 1e4 N/m): the linearised Δv "
+  app.report().say("linearisation",
+                   "One step of h = {h:.4g} s mid-swing (K = 1e4 N/m): the linearised Δv "
                    "differs from backward Euler's exact one by {difference:.2e} (relative); Newton took "
                    "{iterations} solves to a residual of {residual:.1e}.\n\n",
-                   {{"h", l.h}, {"difference", l.difference}, {"iterations", l.newton_iterations},
+                   {{"h", l.h},
+                    {"difference", l.difference},
+                    {"iterations", l.newton_iterations},
                     {"residual", l.newton_residual}});
 }
 
@@ -55,10 +58,15 @@ void large_steps(ChapterApp& app, const ClothScene& scene, ClothKernels kernels,
 void cost_of_accuracy(ChapterApp& app, const ClothScene& scene, ClothKernels kernels,
                       ImplicitKernels implicit, const ImplicitSettings& settings, const Sizes& sizes) {
   const auto trade = kit::speed_accuracy_trade(scene, kernels, implicit, settings, 10, 1e4, sizes.trade_t);
-  app.report().say("trade_reference", "4. The sheet at {n} nodes across, K = {k:.3g} N/m, {t:.3g} s; the "
+  app.report().say("trade_reference",
+                   "4. The sheet at {n} nodes across, K = {k:.3g} N/m, {t:.3g} s; the "
                    "reference is RK4 at Δt = {dt:.3g} s (its energy drifts {drift:.1e} J); symplectic "
-                   "Euler's limit is {dt_max:.3g} s:\n", {{"n", long(trade.n)}, {"k", trade.stiffness},
-                    {"t", trade.t_end}, {"dt", trade.reference_dt}, {"drift", trade.reference_energy_drift},
+                   "Euler's limit is {dt_max:.3g} s:\n",
+                   {{"n", long(trade.n)},
+                    {"k", trade.stiffness},
+                    {"t", trade.t_end},
+                    {"dt", trade.reference_dt},
+                    {"drift", trade.reference_energy_drift},
                     {"dt_max", trade.dt_max}});
   kit::print_trade_table(app.report(), trade);
   app.figure(kit::cloth_damping_figure(trade, scene.name));
@@ -82,16 +90,22 @@ void scene_run(ChapterApp& app, const ClothScene& scene, const kit::Springs& spr
   const std::string method = run.implicit ? kit::flag_name(*run.implicit) : kit::flag_name(run.integrator);
   const std::string why = rec.failure.empty() ? "it exploded" : rec.failure;
   if (rec.exploded_at >= 0) app.diverged(method, fmt::format("at t = {:.4g} s: {}", rec.exploded_at, why));
-  app.report().say("run", "\n6. '{scene}' with {method} at h = {dt:.4g} s: {steps} steps, E(end) − E(0) = "
+  app.report().say("run",
+                   "\n6. '{scene}' with {method} at h = {dt:.4g} s: {steps} steps, E(end) − E(0) = "
                    "{energy:.3e} J, peak stretch {strain:.3g}%, deepest in a collider {deepest:.2e} m.\n",
-                   {{"scene", scene.name}, {"method", method}, {"dt", run.dt}, {"steps", rec.steps},
+                   {{"scene", scene.name},
+                    {"method", method},
+                    {"dt", run.dt},
+                    {"steps", rec.steps},
                     {"energy", rec.samples.back().total() - rec.samples.front().total()},
-                    {"strain", 100 * rec.peak_strain}, {"deepest", rec.deepest}});
+                    {"strain", 100 * rec.peak_strain},
+                    {"deepest", rec.deepest}});
   kit::print_implicit_work(app.report(), rec);
   if (output.dir.empty() || rec.frames.size() < 2) return;
   const kit::ClothOutput made = kit::write_cloth_output(scene, rec, output);
-  app.report().say("frames", "{frames} frames and OBJ meshes in {dir}; {movie}\n", {{"frames",
-                   long(made.frames.size())}, {"dir", output.dir.string()}, {"movie", made.note}});
+  app.report().say(
+      "frames", "{frames} frames and OBJ meshes in {dir}; {movie}\n",
+      {{"frames", long(made.frames.size())}, {"dir", output.dir.string()}, {"movie", made.note}});
   for (const auto& file : made.movies) app.summary()["figures"]["animation"].push_back(file.string());
 }
 }  // namespace
@@ -113,8 +127,8 @@ int main(int argc, char** argv) {
     const ImplicitSettings& settings = run.implicit_settings;  // the flags' solver, for every section
     const Sizes sizes = Sizes::for_run(app.options().quick);
     app.section("linearisation", [&] { linearisation(app, implicit); });
-    const auto springs = app.section("the springs", [&] { return kernels.build_springs(scene.grid,
-                                                                                        scene.springs); });
+    const auto springs =
+        app.section("the springs", [&] { return kernels.build_springs(scene.grid, scene.springs); });
     app.section("the linear system", [&] {
       if (!springs) throw kit::NotImplemented("ex 6.2", "cloth_springs.hpp");
       linear_system(app, scene, *springs, implicit, run.dt);

@@ -26,14 +26,15 @@ using Integrators = std::vector<RotationIntegrator>;
 //    motion (Landau & Lifshitz §37); ex 8.3 against the inverse of the world inertia.
 void the_body(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels, const RigidState& start) {
   kit::print_body(app.report(), s.shape, s.omega0, kit::closed_form_flip_interval(s.shape, start));
-  app.report().attempt("ω from L (ex 8.3)", [&] { kit::print_angular_velocity_check(app.report(), kernels, s.shape); });
+  app.report().attempt("ω from L (ex 8.3)",
+                       [&] { kit::print_angular_velocity_check(app.report(), kernels, s.shape); });
   app.report().print("\n");
 }
 
 // 2. "d/dt R = ω* R": every integrator on the torque-free body at --dt for --t-end; the flips, the
 //    drift of E and |L|, and how far R leaves the rotations.
-void side_by_side(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels, const Integrators& integrators,
-                  const RigidState& start) {
+void side_by_side(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels,
+                  const Integrators& integrators, const RigidState& start) {
   std::vector<kit::RotationRun> runs;
   for (RotationIntegrator i : integrators)
     runs.push_back(kit::run_free_rotation(kernels, i, s.shape, start, s.dt, s.t_end));
@@ -43,7 +44,8 @@ void side_by_side(ChapterApp& app, const RigidSetup& s, const RigidKernels& kern
                    {{"t", s.t_end}, {"h", s.dt}, {"flips", long(flips.size())}});
   kit::print_drift_table(app.report(), runs, interval);
   for (const auto& run : runs)
-    if (run.diverged_at >= 0) app.diverged(flag_name(run.integrator), fmt::format("at t = {:.4g} s", run.diverged_at));
+    if (run.diverged_at >= 0)
+      app.diverged(flag_name(run.integrator), fmt::format("at t = {:.4g} s", run.diverged_at));
   app.figure(kit::rigid_flips_figure(runs, s.shape, flips));
   app.figure(kit::rigid_drift_figure(runs, s.shape.name));
   app.figure(kit::rigid_orthonormality_figure(runs, s.shape.name));
@@ -51,16 +53,16 @@ void side_by_side(ChapterApp& app, const RigidSetup& s, const RigidKernels& kern
 
 // 3. Stability at the extremes: the three principal axes (only the intermediate one flips), and
 //    the step at which each integrator stops flipping at the right rate.
-void stability(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels, const Integrators& integrators,
-               const RigidState& start) {
+void stability(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels,
+               const Integrators& integrators, const RigidState& start) {
   app.report().print("\n3. Spun about each principal axis, nudged by 1%:\n");
   const auto spins = kit::spins_about_axes(s.shape);
   kit::print_axes(app.report(), spins, kit::intermediate_axis(s.shape));
   app.figure(kit::rigid_axes_figure(spins, s.shape.name));
   app.report().print(fmt::format("\nThe flips against the step, {:g} s:\n", s.t_end));
-  kit::print_flip_sweep(app.report(), kit::flip_sweep(kernels, integrators, s.shape, start, s.t_end,
-                                                      {1e-4, 1e-3, 1e-2, 3e-2}),
-                        kit::closed_form_flip_interval(s.shape, start));
+  kit::print_flip_sweep(
+      app.report(), kit::flip_sweep(kernels, integrators, s.shape, start, s.t_end, {1e-4, 1e-3, 1e-2, 3e-2}),
+      kit::closed_form_flip_interval(s.shape, start));
 }
 
 // 4. What accuracy costs: the error in R after 2 s against wall time, each integrator over 100 to
@@ -68,8 +70,10 @@ void stability(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels
 void cost_of_accuracy(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels,
                       const Integrators& integrators, const RigidState& start) {
   const auto trade = kit::rotation_trade(kernels, integrators, s.shape, start, 2.0, s.trade_steps);
-  app.report().say("trade_reference", "\n4. The orientation after {t:g} s against GSL rk8pd at 1e-13 ({evals} "
-                   "evaluations):\n", {{"t", trade.t_end}, {"evals", trade.reference_evaluations}});
+  app.report().say("trade_reference",
+                   "\n4. The orientation after {t:g} s against GSL rk8pd at 1e-13 ({evals} "
+                   "evaluations):\n",
+                   {{"t", trade.t_end}, {"evals", trade.reference_evaluations}});
   kit::print_trade(app.report(), trade);
   app.figure(kit::rigid_trade_figure(trade, s.shape.name));
 }
@@ -80,8 +84,9 @@ void collisions(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernel
   app.report().print("\n5. A box dropped from 1 m, rotation by the implicit midpoint, h = 1 ms:\n");
   for (const auto& [name, tilt] : {std::pair{"drop", 0.0}, std::pair{"drop_tilted", kit::drop_tilt_deg}}) {
     const std::string what = tilt == 0 ? "flat" : fmt::format("tilted {:g}°", tilt);
-    const kit::DropRun run = kit::run_drop(kernels, RotationIntegrator::midpoint, box,
-                                           kit::dropped_state(box, kit::drop_height, tilt), s.contact, 1e-3, 6.0, 0);
+    const kit::DropRun run =
+        kit::run_drop(kernels, RotationIntegrator::midpoint, box,
+                      kit::dropped_state(box, kit::drop_height, tilt), s.contact, 1e-3, 6.0, 0);
     const double resting = kit::resting_height(box, kit::Mat3::Identity());
     kit::print_drop(app.report(), name, what, run, s.contact, kit::drop_height, resting);
     app.figure(kit::rigid_drop_figure(name, "A box dropped " + what, run, s.contact, kit::drop_height));
@@ -92,22 +97,28 @@ void collisions(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernel
 //    their frames, OBJ meshes and animations.
 void scene_runs(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels, const RigidState& start) {
   const auto box = kit::shape_named("box");
-  const auto tumble = kit::run_free_rotation(kernels, s.integrator, s.shape, start, s.dt, s.t_end, 2, s.frames);
+  const auto tumble =
+      kit::run_free_rotation(kernels, s.integrator, s.shape, start, s.dt, s.t_end, 2, s.frames);
   const auto tilted = kit::dropped_state(box, kit::drop_height, kit::drop_tilt_deg);
-  const auto drop = kit::run_drop(kernels, s.integrator, box, tilted, s.contact, s.dt, kit::scene_drop_seconds, s.frames);
-  for (const auto& [what, at] : {std::pair{"tumbling", tumble.diverged_at}, std::pair{"dropped", drop.diverged_at}})
+  const auto drop =
+      kit::run_drop(kernels, s.integrator, box, tilted, s.contact, s.dt, kit::scene_drop_seconds, s.frames);
+  for (const auto& [what, at] :
+       {std::pair{"tumbling", tumble.diverged_at}, std::pair{"dropped", drop.diverged_at}})
     if (at >= 0)
-      app.diverged(fmt::format("{} ({})", what, kit::flag_name(s.integrator)), fmt::format("at t = {:.4g} s", at));
+      app.diverged(fmt::format("{} ({})", what, kit::flag_name(s.integrator)),
+                   fmt::format("at t = {:.4g} s", at));
   kit::print_scene_runs(app.report(), s.integrator, s.dt, s.shape, s.t_end, tumble, drop);
   if (app.options().no_plot || s.frames == 0) return;
-  for (const auto& [stem, shape, frames, seconds] : {std::tuple{s.shape.name, s.shape, tumble.frames, s.t_end},
-                                                     std::tuple{std::string("drop"), box, drop.frames,
-                                                                kit::scene_drop_seconds}}) {
+  for (const auto& [stem, shape, frames, seconds] :
+       {std::tuple{s.shape.name, s.shape, tumble.frames, s.t_end},
+        std::tuple{std::string("drop"), box, drop.frames, kit::scene_drop_seconds}}) {
     const double fps = double(std::max<std::size_t>(frames.size(), 2) - 1) / seconds;  // one frame: still > 0
     const auto made = kit::write_rigid_output(shape, frames, kit::rigid_camera(shape, frames, stem == "drop"),
                                               {app.options().out_dir, 640, 480, fps, stem});
     app.report().say("frames_" + stem, "{frames} frames and OBJ meshes of the {stem} run in {dir}; {movie}\n",
-                     {{"frames", long(made.frames.size())}, {"stem", stem}, {"dir", app.options().out_dir},
+                     {{"frames", long(made.frames.size())},
+                      {"stem", stem},
+                      {"dir", app.options().out_dir},
                       {"movie", made.note}});
     for (const auto& file : made.movies) app.summary()["figures"]["animation"].push_back(file.string());
   }

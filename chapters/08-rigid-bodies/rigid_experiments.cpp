@@ -16,8 +16,12 @@ namespace {
 double relative(double value, double start) { return start == 0 ? value : (value - start) / start; }
 
 RotationSample sample_of(const RigidShape& shape, const RigidState& state, double t, double e0, double l0) {
-  return {t, body_angular_velocity(shape, state), relative(rotational_energy(shape, state), e0),
-          relative(state.L.norm(), l0), relative(body_momentum(state).norm(), l0), orthonormality_error(state.R)};
+  return {t,
+          body_angular_velocity(shape, state),
+          relative(rotational_energy(shape, state), e0),
+          relative(state.L.norm(), l0),
+          relative(body_momentum(state).norm(), l0),
+          orthonormality_error(state.R)};
 }
 
 bool finite(const RigidState& state) { return state.R.allFinite() && state.L.allFinite(); }
@@ -26,7 +30,8 @@ bool finite(const RigidState& state) { return state.R.allFinite() && state.L.all
 
 std::array<int, 3> axes_by_moment(const RigidShape& shape) {
   std::array<int, 3> axes{0, 1, 2};
-  std::sort(axes.begin(), axes.end(), [&](int a, int b) { return shape.inertia(a, a) < shape.inertia(b, b); });
+  std::sort(axes.begin(), axes.end(),
+            [&](int a, int b) { return shape.inertia(a, a) < shape.inertia(b, b); });
   return axes;
 }
 
@@ -51,8 +56,9 @@ double RotationRun::flip_interval() const {
   return (flip_times.back() - flip_times.front()) / double(flip_times.size() - 1);
 }
 
-RotationRun run_free_rotation(const RigidKernels& kernels, RotationIntegrator integrator, const RigidShape& shape,
-                              const RigidState& start, double h, double t_end, long max_samples, long frames) {
+RotationRun run_free_rotation(const RigidKernels& kernels, RotationIntegrator integrator,
+                              const RigidShape& shape, const RigidState& start, double h, double t_end,
+                              long max_samples, long frames) {
   RotationRun run;
   run.integrator = integrator;
   run.h = h;
@@ -80,7 +86,8 @@ RotationRun run_free_rotation(const RigidKernels& kernels, RotationIntegrator in
     run.max_body_momentum_drift = std::max(run.max_body_momentum_drift, std::abs(now.body_momentum_drift));
     run.max_orthonormality = std::max(run.max_orthonormality, now.orthonormality);
     if (k % stride == 0 || k == run.steps) run.samples.push_back(now);
-    if (frames > 0 && k == frame_step(long(run.frames.size()), run.steps, frames)) run.frames.push_back(state);
+    if (frames > 0 && k == frame_step(long(run.frames.size()), run.steps, frames))
+      run.frames.push_back(state);
   }
   run.flip_times = flips.times();
   run.end = state;
@@ -102,10 +109,10 @@ std::vector<AxisSpin> spins_about_axes(const RigidShape& shape, double t_end) {
     spin.axis = axis;
     spin.moment = shape.inertia(axis, axis);
     Vec3 omega = Vec3::Zero();
-    omega[axis] = 10;                // [rad/s]
-    omega[(axis + 2) % 3] = 0.1;     // the disturbance, 1% of the spin
-    spin.run = run_free_rotation({}, RotationIntegrator::rk4, shape, spinning_state(shape, Vec3::Zero(), omega),
-                                 1e-3, t_end);
+    omega[axis] = 10;             // [rad/s]
+    omega[(axis + 2) % 3] = 0.1;  // the disturbance, 1% of the spin
+    spin.run = run_free_rotation({}, RotationIntegrator::rk4, shape,
+                                 spinning_state(shape, Vec3::Zero(), omega), 1e-3, t_end);
     FlipCounter flips(axis);
     for (const auto& sample : spin.run.samples) {
       const Vec3& w = sample.omega_body;
@@ -157,7 +164,8 @@ std::vector<double> reference_flip_times(const RigidShape& shape, const RigidSta
   RigidState from = start;
   for (long first = 1; first <= samples; first += chunk) {
     std::vector<double> times;
-    for (long k = first; k < first + chunk && k <= samples; ++k) times.push_back(double(k - first + 1) * every);
+    for (long k = first; k < first + chunk && k <= samples; ++k)
+      times.push_back(double(k - first + 1) * every);
     const auto states = free_rotation_reference(shape, from, times);
     for (std::size_t k = 0; k < states.size(); ++k)
       flips.add(double(first + long(k)) * every, body_angular_velocity(shape, states[k]));
@@ -166,7 +174,8 @@ std::vector<double> reference_flip_times(const RigidShape& shape, const RigidSta
   return flips.times();
 }
 
-std::vector<FlipSweepRow> flip_sweep(const RigidKernels& kernels, const std::vector<RotationIntegrator>& integrators,
+std::vector<FlipSweepRow> flip_sweep(const RigidKernels& kernels,
+                                     const std::vector<RotationIntegrator>& integrators,
                                      const RigidShape& shape, const RigidState& start, double t_end,
                                      const std::vector<double>& steps) {
   std::vector<FlipSweepRow> rows;

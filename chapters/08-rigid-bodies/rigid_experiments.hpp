@@ -37,22 +37,22 @@ class FlipCounter {
 
 /// One moment of a run: ω in the body frame and how far the invariants have drifted.
 struct RotationSample {
-  double t = 0;                  ///< [s]
+  double t = 0;                    ///< [s]
   Vec3 omega_body = Vec3::Zero();  ///< I_body⁻¹ Rᵀ L [rad/s]
-  double energy_drift = 0;       ///< (E − E0)/E0
-  double momentum_drift = 0;     ///< (|L| − |L0|)/|L0|, L in the world frame
+  double energy_drift = 0;         ///< (E − E0)/E0
+  double momentum_drift = 0;       ///< (|L| − |L0|)/|L0|, L in the world frame
   double body_momentum_drift = 0;  ///< (|RᵀL| − |L0|)/|L0|: what an R off SO(3) makes of L
-  double orthonormality = 0;     ///< ‖RᵀR − I‖
+  double orthonormality = 0;       ///< ‖RᵀR − I‖
 };
 
 struct RotationRun {
   RotationIntegrator integrator{};
-  double h = 0;                    ///< [s]
+  double h = 0;  ///< [s]
   long steps = 0;
   std::vector<RotationSample> samples;  ///< evenly spaced, first and last step included
-  std::vector<double> flip_times;  ///< [s] the flips of the intermediate axis (FlipCounter)
+  std::vector<double> flip_times;       ///< [s] the flips of the intermediate axis (FlipCounter)
   double max_energy_drift = 0, max_momentum_drift = 0, max_orthonormality = 0;  ///< |…| over the run
-  double max_body_momentum_drift = 0;   ///< |…| over the run
+  double max_body_momentum_drift = 0;                                           ///< |…| over the run
   long unconverged_steps = 0;      ///< midpoint steps split because the fixed point stalled
   double diverged_at = -1;         ///< [s] when a value stopped being finite; −1 if never
   std::vector<RigidState> frames;  ///< evenly spaced states for pictures, when asked for
@@ -65,9 +65,9 @@ struct RotationRun {
 /// Runs `integrator` from `start` for t_end [s] at step h, no torque, keeping at most
 /// `max_samples` samples and `frames` + 1 states evenly spaced in time (none when 0). Throws
 /// NotImplemented as rotation_step does.
-RotationRun run_free_rotation(const RigidKernels& kernels, RotationIntegrator integrator, const RigidShape& shape,
-                              const RigidState& start, double h, double t_end, long max_samples = 2000,
-                              long frames = 0);
+RotationRun run_free_rotation(const RigidKernels& kernels, RotationIntegrator integrator,
+                              const RigidShape& shape, const RigidState& start, double h, double t_end,
+                              long max_samples = 2000, long frames = 0);
 
 /// The closed form's time between flips, half its period [s] (rigid_free_rotation.hpp).
 double closed_form_flip_interval(const RigidShape& shape, const RigidState& start);
@@ -75,9 +75,9 @@ double closed_form_flip_interval(const RigidShape& shape, const RigidState& star
 /// A spin mostly about one principal axis: ω0 = 10 rad/s along it, 0.1 rad/s along the body axis
 /// before it ((axis + 2) mod 3).
 struct AxisSpin {
-  int axis = 0;              ///< body axis
-  double moment = 0;         ///< its principal moment [kg·m²]
-  RotationRun run;           ///< RK4 at 1 ms for 10 s
+  int axis = 0;                  ///< body axis
+  double moment = 0;             ///< its principal moment [kg·m²]
+  RotationRun run;               ///< RK4 at 1 ms for 10 s
   double max_deviation_deg = 0;  ///< largest angle between ω and ±that axis [°]
   long flips_about_axis = 0;     ///< flips of that axis (FlipCounter)
 };
@@ -110,14 +110,15 @@ double reference_sampling(const RigidShape& shape, const RigidState& start);
 /// One integrator at one step: does it still flip, and how often?
 struct FlipSweepRow {
   RotationIntegrator integrator{};
-  double h = 0;                ///< [s]
+  double h = 0;  ///< [s]
   long flips = 0;
-  double interval = 0;         ///< mean time between flips [s] (NaN with fewer than two)
-  double max_energy_drift = 0; ///< |ΔE|/E
+  double interval = 0;          ///< mean time between flips [s] (NaN with fewer than two)
+  double max_energy_drift = 0;  ///< |ΔE|/E
   bool diverged = false;
 };
 /// Each integrator at each step of `steps` [s] over [0, t_end].
-std::vector<FlipSweepRow> flip_sweep(const RigidKernels& kernels, const std::vector<RotationIntegrator>& integrators,
+std::vector<FlipSweepRow> flip_sweep(const RigidKernels& kernels,
+                                     const std::vector<RotationIntegrator>& integrators,
                                      const RigidShape& shape, const RigidState& start, double t_end,
                                      const std::vector<double>& steps);
 

@@ -6,9 +6,9 @@
 #include <sstream>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <CLI/CLI.hpp>
 
 #include <kit/base/usage.hpp>
 
@@ -17,12 +17,11 @@ namespace {
 
 constexpr double max_spin = 1e4;  // [rad/s]: about 1600 turns a second, beyond any animated body
 
-
 Vec3 parse_omega(const std::string& text) {
   const auto refuse = [&](const std::string& why) {
     return UsageError(fmt::format("--omega0 '{}': {}; expected three finite numbers x,y,z [rad/s], each in "
-                                  "[-{:g}, {:g}], not all zero, e.g. --omega0 10,0,0.1", text, why, max_spin,
-                                  max_spin));
+                                  "[-{:g}, {:g}], not all zero, e.g. --omega0 10,0,0.1",
+                                  text, why, max_spin, max_spin));
   };
   std::vector<double> values;
   std::stringstream in(text);
@@ -36,8 +35,10 @@ Vec3 parse_omega(const std::string& text) {
     double value = 0;
     const auto [stop, error] = std::from_chars(begin, std::max(begin, end), value);
     if (error == std::errc::result_out_of_range) throw refuse(fmt::format("{} is out of range", item));
-    if (error != std::errc() || stop != std::max(begin, end)) throw refuse(fmt::format("'{}' is not a number", item));
-    if (!std::isfinite(value) || std::abs(value) > max_spin) throw refuse(fmt::format("{} is out of range", item));
+    if (error != std::errc() || stop != std::max(begin, end))
+      throw refuse(fmt::format("'{}' is not a number", item));
+    if (!std::isfinite(value) || std::abs(value) > max_spin)
+      throw refuse(fmt::format("{} is out of range", item));
     values.push_back(value);
   }
   if (values.size() != 3 || text.empty() || text.back() == ',') throw refuse("not three numbers");
@@ -49,20 +50,23 @@ Vec3 parse_omega(const std::string& text) {
 }  // namespace
 
 void add_rigid_flags(ChapterApp& app, RigidFlags& f) {
-  app.add_choice("--body", f.body, "the free body: t-handle, box or cylinder (the drops use the box)", shape_names());
+  app.add_choice("--body", f.body, "the free body: t-handle, box or cylinder (the drops use the box)",
+                 shape_names());
   const auto names = rotation_integrator_names.flags();
   app.add_choice("--integrator", f.integrator,
                  fmt::format("the scene runs' rotation integrator: {}", fmt::join(names, ", ")), names);
   app.add_real("--dt", f.dt, "time step h [s] of the runs at one step", positive(0.1));
   app.add_real("--t-end", f.t_end, "duration of the free body's runs [s]", positive(1e5));
-  app.cli().add_option("--omega0", f.omega0, "initial angular velocity in the body frame [rad/s], as x,y,z")
+  app.cli()
+      .add_option("--omega0", f.omega0, "initial angular velocity in the body frame [rad/s], as x,y,z")
       ->type_name("X,Y,Z")
       ->capture_default_str();
   app.add_real("--restitution", f.restitution, "the ground's coefficient of restitution e", between(0, 1));
   app.add_real("--friction", f.friction, "the ground's Coulomb friction coefficient μ", between(0, 10));
   app.add_count("--frames", f.frames, "pictures and meshes of each scene run (0: none)", 0, 20'000);
-  app.add_count("--trade-steps", f.trade_steps, "the most steps of an integrator in the cost-of-accuracy runs",
-                100, 10'000'000);  // 1e7: about 30 s of the six integrators
+  app.add_count("--trade-steps", f.trade_steps,
+                "the most steps of an integrator in the cost-of-accuracy runs", 100,
+                10'000'000);  // 1e7: about 30 s of the six integrators
 }
 
 RigidSetup rigid_setup(const RigidFlags& flags) {
@@ -81,8 +85,8 @@ RigidSetup rigid_setup(const RigidFlags& flags) {
     if (3 * n <= flags.trade_steps) setup.trade_steps.push_back(3 * n);
   }
   if (flags.dt > flags.t_end)
-    throw UsageError(fmt::format("--dt {} s is longer than --t-end {} s: --dt must be at most --t-end", flags.dt,
-                                 flags.t_end));
+    throw UsageError(fmt::format("--dt {} s is longer than --t-end {} s: --dt must be at most --t-end",
+                                 flags.dt, flags.t_end));
   return setup;
 }
 

@@ -13,13 +13,13 @@ namespace kit {
 struct RigidFlags {
   std::string body = "t-handle";
   std::string integrator = "rk4";
-  double dt = 1e-3;             ///< [s]
-  double t_end = 10;            ///< [s], the free body's run
+  double dt = 1e-3;                 ///< [s]
+  double t_end = 10;                ///< [s], the free body's run
   std::string omega0 = "10,0,0.1";  ///< ω in the body frame at t = 0 [rad/s], "x,y,z"
   double restitution = 0.5;
   double friction = 0.3;
-  long frames = 120;            ///< pictures and meshes of each scene run
-  long trade_steps = 1'000'000; ///< the most steps an integrator takes in the trade
+  long frames = 120;             ///< pictures and meshes of each scene run
+  long trade_steps = 1'000'000;  ///< the most steps an integrator takes in the trade
 };
 
 /// Adds --body --integrator --dt --t-end --omega0 --restitution --friction --frames --trade-steps.
@@ -31,7 +31,7 @@ struct RigidSetup {
   RotationIntegrator integrator{};
   Vec3 omega0 = Vec3::Zero();  ///< [rad/s], body frame
   GroundContact contact;
-  double dt = 0, t_end = 0;    ///< [s]
+  double dt = 0, t_end = 0;  ///< [s]
   long frames = 0;
   std::vector<long> trade_steps;  ///< 100, 300, 1000, … up to --trade-steps
 };

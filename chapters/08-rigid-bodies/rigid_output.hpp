@@ -21,7 +21,7 @@ namespace kit {
 void write_rigid_obj(const std::filesystem::path& path, const RigidShape& shape, const RigidState& state);
 
 struct RigidOutputOptions {
-  std::filesystem::path dir;      ///< <stem>_frames/, <stem>_meshes/ and the animation go here; empty: nothing
+  std::filesystem::path dir;  ///< <stem>_frames/, <stem>_meshes/ and the animation go here; empty: nothing
   int width = 640, height = 480;  ///< [px]
   double fps = 30;                ///< frames per second of the animation [1/s]
   std::string stem;               ///< names the files (a run's body, "t-handle"); empty: the shape's name
@@ -41,7 +41,7 @@ struct RigidOutput {
 /// <stem>_*.obj meshes of an earlier, longer run in those folders are removed first. With an empty
 /// options.dir nothing is written. Throws std::invalid_argument for a size or fps that is not
 /// positive, as Pinhole for a bad camera, std::runtime_error when a file cannot be written.
-RigidOutput write_rigid_output(const RigidShape& shape, const std::vector<RigidState>& frames, const Camera& camera,
-                               const RigidOutputOptions& options);
+RigidOutput write_rigid_output(const RigidShape& shape, const std::vector<RigidState>& frames,
+                               const Camera& camera, const RigidOutputOptions& options);
 
 }  // namespace kit

@@ -20,7 +20,7 @@ RunEstimate estimate_continuum_runs(const ContinuumSetup& s) {
   RunEstimate e;
   e.steps = 7e7 + plates * std::ceil(s.t_end / scene_step(s)) * elements * per_step;
   e.unit = "element steps";
-  e.seconds_per_step = 5e-8;  // an element's forces and their share of the solves, 2020 laptop
+  e.seconds_per_step = 5e-8;        // an element's forces and their share of the solves, 2020 laptop
   e.bytes = 2e7 + elements * 3000;  // the implicit matrix's 81 entries an element and the solver's vectors
   return e;
 }

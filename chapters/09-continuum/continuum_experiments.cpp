@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/Geometry>
 #include <fmt/format.h>
+#include <Eigen/Geometry>
 
 #include <kit/base/stopwatch.hpp>
 #include <kit/fem/fem_material.hpp>
@@ -27,9 +27,10 @@ double euler_bernoulli_tip(const FemMaterial& material, double gravity) {
 }
 
 double timoshenko_tip(const FemMaterial& material, double gravity) {
-  return timoshenko_tip_deflection(
-      beam_load(material, gravity), cantilever_length, material.young, rectangle_second_moment(material.thickness, cantilever_height),
-      material.young / (2 * (1 + material.poisson)), cantilever_height * material.thickness);
+  return timoshenko_tip_deflection(beam_load(material, gravity), cantilever_length, material.young,
+                                   rectangle_second_moment(material.thickness, cantilever_height),
+                                   material.young / (2 * (1 + material.poisson)),
+                                   cantilever_height * material.thickness);
 }
 
 double cantilever_first_frequency(const FemMaterial& material) {
@@ -67,15 +68,16 @@ double mean_on_edge(const FemBody& body, double at, Value&& value) {
 }
 
 double tip_deflection(const FemBody& body) {
-  return mean_on_edge(body, cantilever_length, [&](long i) { return body.mesh().nodes[i].y() - body.x(i, 1); });
+  return mean_on_edge(body, cantilever_length,
+                      [&](long i) { return body.mesh().nodes[i].y() - body.x(i, 1); });
 }
 
 }  // namespace
 
 TipRun run_cantilever(const FemMaterial& material, FemModel model, TipSolver solver, int ny,
                       const ContinuumKernels& kernels, long step_budget) {
-  FemBody body(continuum_mesh(cantilever_length, cantilever_height, 10 * ny, ny, MeshKind::regular), material, model,
-               kernels);
+  FemBody body(continuum_mesh(cantilever_length, cantilever_height, 10 * ny, ny, MeshKind::regular), material,
+               model, kernels);
   clamp_left_edge(body);
   add_weight(body);
   TipRun run;
@@ -102,7 +104,8 @@ TipRun run_cantilever(const FemMaterial& material, FemModel model, TipSolver sol
     const double limit = 0.9 * explicit_step_limit(body);
     run.steps = static_cast<long>(std::ceil(rest_time / limit));
     if (run.steps > step_budget) {
-      run.failure = fmt::format("needs {} steps of {:.3g} s, over the budget of {}", run.steps, limit, step_budget);
+      run.failure =
+          fmt::format("needs {} steps of {:.3g} s, over the budget of {}", run.steps, limit, step_budget);
       return run;
     }
     const double h = rest_time / static_cast<double>(run.steps);
@@ -132,14 +135,15 @@ TipRun run_cantilever(const FemMaterial& material, FemModel model, TipSolver sol
   return run;
 }
 
-TipConvergence cantilever_convergence(const FemMaterial& material, FemModel model, const ContinuumKernels& kernels,
-                                      int finest) {
+TipConvergence cantilever_convergence(const FemMaterial& material, FemModel model,
+                                      const ContinuumKernels& kernels, int finest) {
   TipConvergence c;
   for (int ny = 1; ny <= finest; ny *= 2)
     c.runs.push_back(run_cantilever(material, model, TipSolver::newton, ny, kernels));
   const std::size_t n = c.runs.size();
   if (n < 4)
-    throw std::invalid_argument(fmt::format("cantilever_convergence: finest {} (expected at least 8)", finest));
+    throw std::invalid_argument(
+        fmt::format("cantilever_convergence: finest {} (expected at least 8)", finest));
   if (c.runs[n - 3].done && c.runs[n - 2].done && c.runs[n - 1].done)
     c.richardson = richardson(c.runs[n - 3].tip, c.runs[n - 2].tip, c.runs[n - 1].tip);
   if (!c.richardson.converges) return c;  // no limit, no order
@@ -160,7 +164,8 @@ TipConvergence cantilever_convergence(const FemMaterial& material, FemModel mode
   return c;
 }
 
-std::vector<TurnedElement> turn_sweep(const FemMaterial& material, const ContinuumKernels& kernels, int samples) {
+std::vector<TurnedElement> turn_sweep(const FemMaterial& material, const ContinuumKernels& kernels,
+                                      int samples) {
   const Lame lame = plane_stress_lame(material.young, material.poisson);
   const Eigen::Vector2d rest[3] = {{0, 0}, {0.1, 0}, {0, 0.1}};
   const RestTriangle shape = rest_triangle(rest[0], rest[1], rest[2], material.thickness);
@@ -170,14 +175,16 @@ std::vector<TurnedElement> turn_sweep(const FemMaterial& material, const Continu
     return kernels.element.deformation_gradient(x[0], x[1], x[2], shape.inverse);
   };
   const Eigen::Matrix3d stretch = Eigen::Vector3d(1.01, 1, 1).asDiagonal();
-  const double scale = linear_forces(gradient(stretch), shape.inverse, shape.volume, lame).cwiseAbs().maxCoeff();
+  const double scale =
+      linear_forces(gradient(stretch), shape.inverse, shape.volume, lame).cwiseAbs().maxCoeff();
   std::vector<TurnedElement> sweep;
   for (int k = 0; k < samples; ++k) {
     const double degrees = 180.0 * k / (samples - 1);
     const Matrix32 F = gradient(Eigen::AngleAxisd(degrees * M_PI / 180, Vec3::UnitZ()).toRotationMatrix());
-    sweep.push_back({degrees, cauchy_strain(F).norm(), kernels.element.green_strain(F).norm(),
-                     linear_forces(F, shape.inverse, shape.volume, lame).cwiseAbs().maxCoeff() / scale,
-                     kernels.element.forces(F, shape.inverse, shape.volume, lame).cwiseAbs().maxCoeff() / scale});
+    sweep.push_back(
+        {degrees, cauchy_strain(F).norm(), kernels.element.green_strain(F).norm(),
+         linear_forces(F, shape.inverse, shape.volume, lame).cwiseAbs().maxCoeff() / scale,
+         kernels.element.forces(F, shape.inverse, shape.volume, lame).cwiseAbs().maxCoeff() / scale});
   }
   return sweep;
 }
@@ -185,7 +192,8 @@ std::vector<TurnedElement> turn_sweep(const FemMaterial& material, const Continu
 PlateRun spin_plate(const FemMaterial& material, FemModel model, TimeIntegrator integrator, int resolution,
                     MeshKind mesh, double h, double t_end, const ContinuumKernels& kernels, int samples,
                     const std::function<void(const FemBody&, int, double)>& on_sample) {
-  FemBody body(continuum_mesh(plate_side, plate_side, resolution, resolution, mesh), material, model, kernels);
+  FemBody body(continuum_mesh(plate_side, plate_side, resolution, resolution, mesh), material, model,
+               kernels);
   body.hold_in_plane();
   const Eigen::RowVector3d centre(plate_side / 2, plate_side / 2, 0);
   for (long i = 0; i < body.nodes(); ++i) {
@@ -244,7 +252,7 @@ PlateRun spin_plate(const FemMaterial& material, FemModel model, TimeIntegrator 
 }
 
 std::optional<double> sheet_stretch(const FemMaterial& material, FemModel model, MeshKind mesh, int n,
-                     const ContinuumKernels& kernels) {
+                                    const ContinuumKernels& kernels) {
   FemBody body(continuum_mesh(1, 1, n, n, mesh), material, model, kernels);
   clamp_left_edge(body);
   const double stress = 1e-3 * material.young;  // [Pa]
@@ -256,7 +264,8 @@ std::optional<double> sheet_stretch(const FemMaterial& material, FemModel model,
             [&](long a, long b) { return body.mesh().nodes[a].y() < body.mesh().nodes[b].y(); });
   for (std::size_t k = 0; k < edge.size(); ++k) {
     const double below = k > 0 ? body.mesh().nodes[edge[k]].y() - body.mesh().nodes[edge[k - 1]].y() : 0;
-    const double above = k + 1 < edge.size() ? body.mesh().nodes[edge[k + 1]].y() - body.mesh().nodes[edge[k]].y() : 0;
+    const double above =
+        k + 1 < edge.size() ? body.mesh().nodes[edge[k + 1]].y() - body.mesh().nodes[edge[k]].y() : 0;
     body.loads(edge[k], 0) = stress * material.thickness * (below + above) / 2;
   }
   if (!solve_static(body).converged) return std::nullopt;
@@ -269,8 +278,8 @@ std::optional<double> StretchRow::difference() const {
   return std::abs(*irregular - *regular) / *regular;
 }
 
-std::vector<StretchRow> stretch_sweep(const FemMaterial& material, FemModel model, const std::vector<int>& sizes,
-                                      const ContinuumKernels& kernels) {
+std::vector<StretchRow> stretch_sweep(const FemMaterial& material, FemModel model,
+                                      const std::vector<int>& sizes, const ContinuumKernels& kernels) {
   std::vector<StretchRow> rows;
   for (const int n : sizes)
     rows.push_back({n, sheet_stretch(material, model, MeshKind::regular, n, kernels),

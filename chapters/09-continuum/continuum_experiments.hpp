@@ -70,8 +70,8 @@ struct TipConvergence {
   Convergence richardson;
   double order = 0;
 };
-TipConvergence cantilever_convergence(const FemMaterial& material, FemModel model, const ContinuumKernels& kernels,
-                                      int finest = 32);
+TipConvergence cantilever_convergence(const FemMaterial& material, FemModel model,
+                                      const ContinuumKernels& kernels, int finest = 32);
 
 // --- a rigid turn ----------------------------------------------------------------------------
 /// One element (the right triangle (0, 0), (0.1, 0), (0, 0.1) m) turned rigidly by `degrees` in
@@ -84,7 +84,8 @@ struct TurnedElement {
   double linear_force = 0;   ///< relative to the 1% stretch's
   double stvk_force = 0;
 };
-std::vector<TurnedElement> turn_sweep(const FemMaterial& material, const ContinuumKernels& kernels, int samples = 37);
+std::vector<TurnedElement> turn_sweep(const FemMaterial& material, const ContinuumKernels& kernels,
+                                      int samples = 37);
 
 // --- the spinning plate ----------------------------------------------------------------------
 inline constexpr double plate_side = 0.5;                     ///< [m]
@@ -108,7 +109,9 @@ inline constexpr auto time_integrator_names = enum_names<TimeIntegrator>({
     {TimeIntegrator::implicit_euler, "implicit", "implicit Euler"},
 });
 static_assert(time_integrator_names.in_order());
-inline const char* integrator_name(TimeIntegrator integrator) { return time_integrator_names.flag(integrator); }
+inline const char* integrator_name(TimeIntegrator integrator) {
+  return time_integrator_names.flag(integrator);
+}
 struct PlateSample {
   double t = 0;       ///< [s]
   double strain = 0;  ///< the largest Green strain of the current shape, whatever the model
@@ -118,8 +121,8 @@ struct PlateSample {
 struct PlateRun {
   std::vector<PlateSample> samples;
   long steps = 0, iterations = 0;
-  bool diverged = false;  ///< a position stopped being finite, or the energy grew a hundredfold
-  double diverged_at = 0; ///< when that was seen [s] (checked at every sample)
+  bool diverged = false;   ///< a position stopped being finite, or the energy grew a hundredfold
+  double diverged_at = 0;  ///< when that was seen [s] (checked at every sample)
   double h = 0;
 };
 /// The plate, free, spinning at plate_spin about its centre, for t_end [s] at step h [s] (0: the
@@ -142,7 +145,7 @@ struct StretchRow {
   std::optional<double> regular, irregular;  ///< sheet_stretch on each mesh
   std::optional<double> difference() const;  ///< |irregular − regular| / regular, when both are there
 };
-std::vector<StretchRow> stretch_sweep(const FemMaterial& material, FemModel model, const std::vector<int>& sizes,
-                                      const ContinuumKernels& kernels);
+std::vector<StretchRow> stretch_sweep(const FemMaterial& material, FemModel model,
+                                      const std::vector<int>& sizes, const ContinuumKernels& kernels);
 
 }  // namespace kit

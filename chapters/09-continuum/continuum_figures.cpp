@@ -11,9 +11,12 @@
 namespace kit {
 namespace {
 
-/// The relaxations drawn dashed, so that the three St Venant–Kirchhoff solvers differ by more than their points.
+/// The relaxations drawn dashed, so that the three St Venant–Kirchhoff solvers differ by more than their
+/// points.
 std::string dashes(TipSolver solver) {
-  return solver == TipSolver::explicit_relaxation ? " dt 2" : solver == TipSolver::implicit_relaxation ? " dt 3" : "";
+  return solver == TipSolver::explicit_relaxation   ? " dt 2"
+         : solver == TipSolver::implicit_relaxation ? " dt 3"
+                                                    : "";
 }
 
 const char* model_title(FemModel model) {
@@ -44,9 +47,10 @@ std::string model_style(FemModel model) {
 
 Figure cantilever_figure(const std::map<FemModel, TipConvergence>& models, const FemMaterial& material) {
   const double euler_bernoulli = euler_bernoulli_tip(material);
-  Figure fig("cantilever", fmt::format("A cantilever under its own weight, 1 m × 0.1 m: Euler–Bernoulli's tip "
-                                       "qL^4/(8EI) is {:.4g} mm",
-                                       1e3 * euler_bernoulli));
+  Figure fig("cantilever",
+             fmt::format("A cantilever under its own weight, 1 m × 0.1 m: Euler–Bernoulli's tip "
+                         "qL^4/(8EI) is {:.4g} mm",
+                         1e3 * euler_bernoulli));
   fig.columns = 2;
   fig.width_in = 10;
   fig.height_in = 4.2;
@@ -68,15 +72,18 @@ Figure cantilever_figure(const std::map<FemModel, TipConvergence>& models, const
     if (!n.empty()) last = std::max(last, n.back());
     // At 1.5 µm of sag the linear and St Venant–Kirchhoff tips agree to 1e-5: the linear curve is
     // dashed over open circles so that neither hides the other.
-    const std::string look = model_style(model) + (model == FemModel::linear ? " lw 2 dt 2 pt 6 ps 1.8" : " lw 2 pt 7");
+    const std::string look =
+        model_style(model) + (model == FemModel::linear ? " lw 2 dt 2 pt 6 ps 1.8" : " lw 2 pt 7");
     tip.line(model_title(model), n, ratio, look).with = "linespoints";
     if (!c.richardson.converges || n.size() < 2) continue;  // no limit to measure from
     // The finest mesh sits on Richardson's limit by construction: left out of the right panel.
     n.pop_back();
     distance.pop_back();
     // The cell size h goes as elements^−½: an error ∝ h^p falls as elements^(−p/2) on this axis.
-    error.line(fmt::format("{}: elements^{{−{:.2f}}} = h^{{{:.2f}}}", model_title(model), c.order / 2, c.order), n,
-               distance, look)
+    error
+        .line(
+            fmt::format("{}: elements^{{−{:.2f}}} = h^{{{:.2f}}}", model_title(model), c.order / 2, c.order),
+            n, distance, look)
         .with = "linespoints";
   }
   const double timoshenko = timoshenko_tip(material) / euler_bernoulli;
@@ -113,15 +120,17 @@ Figure turn_figure(const std::vector<TurnedElement>& sweep) {
   forces.logy = true;
   forces.key = "center right";
   forces.line("linear FEM", deg, linear, model_style(FemModel::linear) + " lw 2");
-  forces.line("St Venant–Kirchhoff: round-off, 0 drawn at 1e-17", deg, stvk, model_style(FemModel::stvk) + " lw 2");
+  forces.line("St Venant–Kirchhoff: round-off, 0 drawn at 1e-17", deg, stvk,
+              model_style(FemModel::stvk) + " lw 2");
   forces.commands.push_back("set xrange [0:180]");
   forces.commands.push_back("set xtics 45");
   return fig;
 }
 
 Figure plate_figure(const std::map<FemModel, PlateRun>& runs, const std::string& integrator) {
-  Figure fig("spinning-plate",
-             fmt::format("A free plate spun at π rad/s ({} Euler): the linear model cannot turn", integrator));
+  Figure fig(
+      "spinning-plate",
+      fmt::format("A free plate spun at π rad/s ({} Euler): the linear model cannot turn", integrator));
   fig.columns = 2;
   fig.width_in = 10;
   fig.height_in = 4;
@@ -132,7 +141,8 @@ Figure plate_figure(const std::map<FemModel, PlateRun>& runs, const std::string&
   angle.key = "top left";
   for (const auto& [model, run] : runs) {
     std::vector<double> t, e, a;
-    for (const auto& s : run.samples) t.push_back(s.t), e.push_back(magnitude_on_log_axis(s.strain)), a.push_back(s.angle);
+    for (const auto& s : run.samples)
+      t.push_back(s.t), e.push_back(magnitude_on_log_axis(s.strain)), a.push_back(s.angle);
     strain.line(model_title(model), t, e, model_style(model) + " lw 2");
     angle.line(model_title(model), t, a, model_style(model) + " lw 2");
   }
@@ -180,7 +190,8 @@ Figure stretch_figure(const std::map<FemModel, std::vector<StretchRow>>& rows) {
       if (r.regular) n_regular.push_back(r.n), regular.push_back(*r.regular);
       if (r.irregular) n_irregular.push_back(r.n), irregular.push_back(*r.irregular);
     }
-    p.line(fmt::format("{}, regular mesh", model_title(model)), n_regular, regular, model_style(model) + " lw 2 pt 7")
+    p.line(fmt::format("{}, regular mesh", model_title(model)), n_regular, regular,
+           model_style(model) + " lw 2 pt 7")
         .with = "linespoints";
     p.line(fmt::format("{}, irregular mesh", model_title(model)), n_irregular, irregular,
            model_style(model) + " lw 2 dt 2 pt 6")
@@ -193,7 +204,8 @@ Figure stretch_figure(const std::map<FemModel, std::vector<StretchRow>>& rows) {
 }
 
 Figure trade_figure(const std::vector<std::vector<TipRun>>& series) {
-  Figure fig("trade-timing", "What the cantilever's accuracy costs: each point one mesh, 20 to 1280 elements");
+  Figure fig("trade-timing",
+             "What the cantilever's accuracy costs: each point one mesh, 20 to 1280 elements");
   auto& p = fig.panel("wall time [s]", "|tip / Euler–Bernoulli − 1|");
   p.logx = p.logy = true;
   const char* points[] = {"pt 7", "pt 5", "pt 9", "pt 11", "pt 13"};

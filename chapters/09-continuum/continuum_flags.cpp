@@ -10,14 +10,16 @@
 namespace kit {
 
 void add_continuum_flags(ChapterApp& app, ContinuumFlags& f) {
-  app.add_real("--young", f.young, "Young's modulus E [Pa] of every experiment's material", between(1e3, 1e12));
+  app.add_real("--young", f.young, "Young's modulus E [Pa] of every experiment's material",
+               between(1e3, 1e12));
   app.add_real("--poisson", f.poisson, "Poisson's ratio ν", between(0, 0.49));
   app.add_real("--density", f.density, "density ρ [kg/m³]", between(1, 1e5));
   app.add_count("--resolution", f.resolution, "the spinning plate's cells per side", 2, 128);
   app.add_choice("--mesh", f.mesh, "the plate's mesh: regular (alternating diagonals) or irregular",
                  mesh_kind_names.flags());
   app.add_choice("--model", f.model, "the plate's model: linear, stvk or springs", fem_model_names.flags());
-  app.add_choice("--integrator", f.integrator, "the plate's integrator: explicit (symplectic Euler) or implicit",
+  app.add_choice("--integrator", f.integrator,
+                 "the plate's integrator: explicit (symplectic Euler) or implicit",
                  time_integrator_names.flags());
   app.add_real("--dt", f.dt, "the plate's time step h [s]; 0: 0.9 of the explicit limit, or 1 ms implicit",
                between(0, 0.1));
@@ -37,8 +39,8 @@ ContinuumSetup continuum_setup(const ContinuumFlags& flags) {
   s.t_end = flags.t_end;
   s.frames = flags.frames;
   if (flags.dt > flags.t_end)
-    throw UsageError(fmt::format("--dt {} s is longer than --t-end {} s: --dt must be at most --t-end", flags.dt,
-                                 flags.t_end));
+    throw UsageError(fmt::format("--dt {} s is longer than --t-end {} s: --dt must be at most --t-end",
+                                 flags.dt, flags.t_end));
   return s;
 }
 
@@ -51,10 +53,10 @@ double scene_step(const ContinuumSetup& s) {
 }
 
 std::string describe_continuum_run(const ContinuumFlags& f) {
-  return fmt::format("--young {} Pa, --poisson {}, --density {} kg/m³, --resolution {}, --mesh {}, --model {}, "
-                     "--integrator {}, --dt {} s, --t-end {} s, --frames {}",
-                     f.young, f.poisson, f.density, f.resolution, f.mesh, f.model, f.integrator, f.dt, f.t_end,
-                     f.frames);
+  return fmt::format(
+      "--young {} Pa, --poisson {}, --density {} kg/m³, --resolution {}, --mesh {}, --model {}, "
+      "--integrator {}, --dt {} s, --t-end {} s, --frames {}",
+      f.young, f.poisson, f.density, f.resolution, f.mesh, f.model, f.integrator, f.dt, f.t_end, f.frames);
 }
 
 }  // namespace kit

@@ -10,16 +10,16 @@
 namespace kit {
 
 struct ContinuumFlags {
-  double young = 1e9;        ///< [Pa]: a stiff polymer (nylon is 2–4 GPa)
+  double young = 1e9;  ///< [Pa]: a stiff polymer (nylon is 2–4 GPa)
   double poisson = 0.3;
-  double density = 1000;     ///< [kg/m³]
-  long resolution = 8;       ///< the plate's cells per side
+  double density = 1000;  ///< [kg/m³]
+  long resolution = 8;    ///< the plate's cells per side
   std::string mesh = "regular";
   std::string model = "stvk";
   std::string integrator = "explicit";
-  double dt = 0;             ///< [s]; 0: 0.9 of the explicit limit, or 1 ms implicit
-  double t_end = 1;          ///< [s]
-  long frames = 24;          ///< OBJ meshes of the plate
+  double dt = 0;     ///< [s]; 0: 0.9 of the explicit limit, or 1 ms implicit
+  double t_end = 1;  ///< [s]
+  long frames = 24;  ///< OBJ meshes of the plate
 };
 
 /// Adds the flags above.

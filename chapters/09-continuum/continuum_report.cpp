@@ -10,22 +10,24 @@ namespace kit {
 
 void print_material(Report& report, const FemMaterial& m) {
   const Lame lame = plane_stress_lame(m.young, m.poisson);
-  report.say("material",
-             "1. The material: E = {young:g} Pa, ν = {poisson:g}, ρ = {density:g} kg/m³; in plane "
-             "stress λ* = {lambda:.4g} Pa, μ = {mu:.4g} Pa. The cantilever ({length:g} m × {height:g} m) sags by "
-             "{tip:.5g} mm at its tip by Euler–Bernoulli; its first bending mode is ω1 = {omega:.4g} rad/s.\n",
-             {{"young", m.young},
-              {"poisson", m.poisson},
-              {"density", m.density},
-              {"lambda", lame.lambda},
-              {"mu", lame.mu},
-              {"length", cantilever_length},
-              {"height", cantilever_height},
-              {"tip", 1e3 * euler_bernoulli_tip(m)},
-              {"omega", cantilever_first_frequency(m)}});
+  report.say(
+      "material",
+      "1. The material: E = {young:g} Pa, ν = {poisson:g}, ρ = {density:g} kg/m³; in plane "
+      "stress λ* = {lambda:.4g} Pa, μ = {mu:.4g} Pa. The cantilever ({length:g} m × {height:g} m) sags by "
+      "{tip:.5g} mm at its tip by Euler–Bernoulli; its first bending mode is ω1 = {omega:.4g} rad/s.\n",
+      {{"young", m.young},
+       {"poisson", m.poisson},
+       {"density", m.density},
+       {"lambda", lame.lambda},
+       {"mu", lame.mu},
+       {"length", cantilever_length},
+       {"height", cantilever_height},
+       {"tip", 1e3 * euler_bernoulli_tip(m)},
+       {"omega", cantilever_first_frequency(m)}});
 }
 
-void print_cantilever(Report& report, const std::map<FemModel, TipConvergence>& models, const FemMaterial& material) {
+void print_cantilever(Report& report, const std::map<FemModel, TipConvergence>& models,
+                      const FemMaterial& material) {
   const double euler_bernoulli = euler_bernoulli_tip(material), timoshenko = timoshenko_tip(material);
   std::vector<Column> columns{{"cells through h", "ny"}, {"elements", "elements"}};
   for (const auto& [model, c] : models)
@@ -48,8 +50,10 @@ void print_cantilever(Report& report, const std::map<FemModel, TipConvergence>& 
              {{"timoshenko", 1e3 * timoshenko}, {"above", 100 * (timoshenko / euler_bernoulli - 1)}});
   const double sag = euler_bernoulli / cantilever_length;
   if (sag > 0.01)
-    report.say("cantilever", "Euler–Bernoulli's tip is {sag:.3g} of the length: past small deflections, where it and "
-               "the linear model hold; St Venant–Kirchhoff's answer is the large-rotation one.\n", {{"sag", sag}});
+    report.say("cantilever",
+               "Euler–Bernoulli's tip is {sag:.3g} of the length: past small deflections, where it and "
+               "the linear model hold; St Venant–Kirchhoff's answer is the large-rotation one.\n",
+               {{"sag", sag}});
   std::optional<double> fem_limit;  // the 2-D answer, from a finite-element model that converged
   for (const auto& [model, c] : models)
     if (model != FemModel::springs && c.richardson.converges) fem_limit = c.richardson.limit;
@@ -62,30 +66,35 @@ void print_cantilever(Report& report, const std::map<FemModel, TipConvergence>& 
       continue;
     }
     if (!c.richardson.converges) {
-      report.say(section,
-                 "{model}: {finest:+.2f}% from Euler–Bernoulli at {elements} elements; the three finest meshes "
-                 "are not monotone (no Richardson limit of its own).\n",
-                 {{"model", model_name(model)}, {"finest", 100 * c.runs.back().error},
-                  {"elements", c.runs.back().elements}});
+      report.say(
+          section,
+          "{model}: {finest:+.2f}% from Euler–Bernoulli at {elements} elements; the three finest meshes "
+          "are not monotone (no Richardson limit of its own).\n",
+          {{"model", model_name(model)},
+           {"finest", 100 * c.runs.back().error},
+           {"elements", c.runs.back().elements}});
       if (fem_limit)
-        report.say(section, "  That is {vs_fem:+.2f}% from the finite elements' limit: the springs settle "
-                   "elsewhere than the 2-D answer.\n", {{"vs_fem", 100 * (c.runs.back().tip / *fem_limit - 1)}});
+        report.say(section,
+                   "  That is {vs_fem:+.2f}% from the finite elements' limit: the springs settle "
+                   "elsewhere than the 2-D answer.\n",
+                   {{"vs_fem", 100 * (c.runs.back().tip / *fem_limit - 1)}});
       continue;
     }
     const double limit = c.richardson.limit;
-    report.say(section,
-               "{model}: {finest:+.2f}% from Euler–Bernoulli at {elements} elements; Richardson's limit "
-               "{limit:.5g} mm is {vs_eb:+.2f}% from Euler–Bernoulli and {vs_timoshenko:+.2f}% from Timoshenko; "
-               "the error falls as h^{order:.2f} (fitted from 2 cells through the height on; Richardson's ratio of "
-               "the finest three says h^{richardson_order:.2f}).\n",
-               {{"model", model_name(model)},
-                {"finest", 100 * c.runs.back().error},
-                {"elements", c.runs.back().elements},
-                {"limit", 1e3 * limit},
-                {"vs_eb", 100 * (limit / euler_bernoulli - 1)},
-                {"vs_timoshenko", 100 * (limit / timoshenko - 1)},
-                {"order", c.order},
-                {"richardson_order", c.richardson.order}});
+    report.say(
+        section,
+        "{model}: {finest:+.2f}% from Euler–Bernoulli at {elements} elements; Richardson's limit "
+        "{limit:.5g} mm is {vs_eb:+.2f}% from Euler–Bernoulli and {vs_timoshenko:+.2f}% from Timoshenko; "
+        "the error falls as h^{order:.2f} (fitted from 2 cells through the height on; Richardson's ratio of "
+        "the finest three says h^{richardson_order:.2f}).\n",
+        {{"model", model_name(model)},
+         {"finest", 100 * c.runs.back().error},
+         {"elements", c.runs.back().elements},
+         {"limit", 1e3 * limit},
+         {"vs_eb", 100 * (limit / euler_bernoulli - 1)},
+         {"vs_timoshenko", 100 * (limit / timoshenko - 1)},
+         {"order", c.order},
+         {"richardson_order", c.richardson.order}});
   }
 }
 
@@ -103,9 +112,13 @@ void print_turns(Report& report, const std::vector<TurnedElement>& sweep) {
 }
 
 void print_plate(Report& report, const std::map<FemModel, PlateRun>& runs) {
-  auto table = report.table("plate", {{"model", ""}, {"h [s]", "h", "{:.3g}"}, {"steps", "steps"},
-                                      {"turned [rad]", "angle", "{:.4f}"}, {"largest |E|", "strain", "{:.3g}"},
-                                      {"energy change", "energy_change", "{:+.3g}"}, {"", "diverged"},
+  auto table = report.table("plate", {{"model", ""},
+                                      {"h [s]", "h", "{:.3g}"},
+                                      {"steps", "steps"},
+                                      {"turned [rad]", "angle", "{:.4f}"},
+                                      {"largest |E|", "strain", "{:.3g}"},
+                                      {"energy change", "energy_change", "{:+.3g}"},
+                                      {"", "diverged"},
                                       {"diverged at [s]", "diverged_at", "{:.3g}"}});
   for (const auto& [model, run] : runs) {
     ReportValue angle, strain, energy, when;  // "-" once the run has diverged: its last state is no result
@@ -118,7 +131,8 @@ void print_plate(Report& report, const std::map<FemModel, PlateRun>& runs) {
       strain = end.strain;
       energy = (end.energy - start) / start;
     }
-    table.row(model_name(model), {model_name(model), run.h, run.steps, angle, strain, energy, run.diverged, when});
+    table.row(model_name(model),
+              {model_name(model), run.h, run.steps, angle, strain, energy, run.diverged, when});
   }
   table.print();
 }
@@ -147,7 +161,8 @@ void print_trade(Report& report, const std::vector<std::vector<TipRun>>& series)
                                       {"", "note"}});
   for (const auto& list : series)
     for (const auto& r : list)
-      table.row({model_name(r.model), solver_name(r.solver), r.elements, r.done ? ReportValue(r.error) : ReportValue(),
+      table.row({model_name(r.model), solver_name(r.solver), r.elements,
+                 r.done ? ReportValue(r.error) : ReportValue(),
                  r.done ? ReportValue(r.seconds) : ReportValue(), r.steps, r.iterations, r.failure});
   table.print();
 }

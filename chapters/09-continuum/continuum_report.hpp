@@ -13,7 +13,8 @@ namespace kit {
 void print_material(Report& report, const FemMaterial& material);
 /// The cantilever's tip by mesh against Euler–Bernoulli, one column a model; each model's
 /// Richardson limit against Euler–Bernoulli and Timoshenko, and its fitted order.
-void print_cantilever(Report& report, const std::map<FemModel, TipConvergence>& models, const FemMaterial& material);
+void print_cantilever(Report& report, const std::map<FemModel, TipConvergence>& models,
+                      const FemMaterial& material);
 /// The rigidly turned element at a few angles.
 void print_turns(Report& report, const std::vector<TurnedElement>& sweep);
 /// The spinning plate's end state, by model.

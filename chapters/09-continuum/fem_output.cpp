@@ -13,11 +13,13 @@ namespace kit {
 void write_fem_obj(const std::filesystem::path& path, const FemBody& body) {
   std::string text = fmt::format("# A {} sheet, {} nodes, {} triangles; positions in metres.\n"
                                  "# Written by the physics-for-animation kit; opens in Blender and MeshLab.\n"
-                                 "o sheet\n", model_name(body.model()), body.nodes(), body.elements());
+                                 "o sheet\n",
+                                 model_name(body.model()), body.nodes(), body.elements());
   text.reserve(text.size() + std::size_t(body.nodes()) * 50 + std::size_t(body.elements()) * 20);
   for (long k = 0; k < body.nodes(); ++k)
     text += fmt::format("v {:.9g} {:.9g} {:.9g}\n", body.x(k, 0), body.x(k, 1), body.x(k, 2));
-  for (const auto& t : body.mesh().triangles) text += fmt::format("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1);
+  for (const auto& t : body.mesh().triangles)
+    text += fmt::format("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1);
   write_file_atomic(path, text);
 }
 

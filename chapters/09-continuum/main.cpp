@@ -20,9 +20,7 @@ using kit::ChapterApp, kit::ContinuumKernels, kit::ContinuumSetup, kit::FemModel
 
 // 1. "σ = E ε": the material, in plane stress (errata 16: Lamé's λ and μ, not one E), and the
 //    cantilever's closed forms.
-void the_material(ChapterApp& app, const ContinuumSetup& s) {
-  kit::print_material(app.report(), s.material);
-}
+void the_material(ChapterApp& app, const ContinuumSetup& s) { kit::print_material(app.report(), s.material); }
 
 // 2. "ε = ½(∇u + ∇uᵀ + ∇uᵀ∇u)": one element turned rigidly, then a free plate spun at π rad/s for
 //    --t-end by each model, with --integrator, --dt, --resolution and --mesh.
@@ -34,26 +32,28 @@ void green_strain(ChapterApp& app, const ContinuumSetup& s, const ContinuumKerne
     app.figure(kit::turn_figure(sweep));
   });
   std::map<FemModel, kit::PlateRun> runs;
-  std::map<FemModel, std::vector<kit::TimedOutline>> outlines;  // linear and StVK, near t = 0, ⅓, ⅔, 1 of --t-end
+  std::map<FemModel, std::vector<kit::TimedOutline>>
+      outlines;  // linear and StVK, near t = 0, ⅓, ⅔, 1 of --t-end
   for (const FemModel model : {FemModel::linear, FemModel::stvk, FemModel::springs}) {
     const auto keep_outline = [&](const kit::FemBody& body, int, double t) {
       if (model == FemModel::springs) return;
       auto& kept = outlines[model];
       if (t < s.t_end * double(kept.size()) / 3 * (1 - 1e-9)) return;
       kit::Outline shape;
-      for (const int node : kit::boundary_loop(body.mesh())) shape.emplace_back(body.x(node, 0), body.x(node, 1));
+      for (const int node : kit::boundary_loop(body.mesh()))
+        shape.emplace_back(body.x(node, 0), body.x(node, 1));
       kept.emplace_back(t, std::move(shape));
     };
     app.report().attempt(kit::model_name(model), [&] {
-      runs[model] = kit::spin_plate(s.material, model, s.integrator, s.resolution, s.mesh, s.dt, s.t_end, kernels,
-                                    90, keep_outline);
+      runs[model] = kit::spin_plate(s.material, model, s.integrator, s.resolution, s.mesh, s.dt, s.t_end,
+                                    kernels, 90, keep_outline);
       if (runs[model].diverged) app.diverged(fmt::format("spinning plate ({})", kit::model_name(model)), "");
     });
     if (!runs.contains(model)) outlines.erase(model);
   }
   if (runs.empty()) return;
-  app.report().print(fmt::format("\nA free {0}×{0} plate spun at π rad/s for {1:g} s ({2} Euler):\n", s.resolution,
-                                 s.t_end, kit::integrator_name(s.integrator)));
+  app.report().print(fmt::format("\nA free {0}×{0} plate spun at π rad/s for {1:g} s ({2} Euler):\n",
+                                 s.resolution, s.t_end, kit::integrator_name(s.integrator)));
   kit::print_plate(app.report(), runs);
   app.figure(kit::plate_figure(runs, kit::integrator_name(s.integrator)));
   if (outlines.size() == 2) app.figure(kit::plate_shapes_figure(outlines));
@@ -75,12 +75,14 @@ void cantilever(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels
 // 4. "Limitations: dépendance au maillage": a sheet stretched by the same load on regular and
 //    irregular meshes, by St Venant–Kirchhoff and by springs.
 void mesh_dependence(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
-  app.report().print("\n4. A 1 m sheet clamped on its left edge, pulled by 1e-3 E on its right edge: its stretch "
-                     "over the 1-D answer σL/E:\n");
+  app.report().print(
+      "\n4. A 1 m sheet clamped on its left edge, pulled by 1e-3 E on its right edge: its stretch "
+      "over the 1-D answer σL/E:\n");
   std::map<FemModel, std::vector<kit::StretchRow>> rows;
   for (const FemModel model : {FemModel::stvk, FemModel::springs})
-    app.report().attempt(kit::model_name(model),
-                         [&] { rows[model] = kit::stretch_sweep(s.material, model, {4, 8, 16, 32, 64}, kernels); });
+    app.report().attempt(kit::model_name(model), [&] {
+      rows[model] = kit::stretch_sweep(s.material, model, {4, 8, 16, 32, 64}, kernels);
+    });
   if (rows.empty()) return;
   kit::print_stretch(app.report(), rows);
   app.figure(kit::stretch_figure(rows));
@@ -90,18 +92,20 @@ void mesh_dependence(ChapterApp& app, const ContinuumSetup& s, const ContinuumKe
 //    by Newton, St Venant–Kirchhoff by Newton and by explicit and implicit relaxation (--quick: to 4 high).
 void cost_of_accuracy(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
   app.report().print("\n5. The cantilever's tip against wall time:\n");
-  const std::vector<std::pair<FemModel, TipSolver>> methods{
-      {FemModel::springs, TipSolver::newton}, {FemModel::linear, TipSolver::newton},
-      {FemModel::stvk, TipSolver::newton}, {FemModel::stvk, TipSolver::explicit_relaxation},
-      {FemModel::stvk, TipSolver::implicit_relaxation}};
+  const std::vector<std::pair<FemModel, TipSolver>> methods{{FemModel::springs, TipSolver::newton},
+                                                            {FemModel::linear, TipSolver::newton},
+                                                            {FemModel::stvk, TipSolver::newton},
+                                                            {FemModel::stvk, TipSolver::explicit_relaxation},
+                                                            {FemModel::stvk, TipSolver::implicit_relaxation}};
   std::vector<std::vector<kit::TipRun>> series;
   for (const auto& method : methods)  // not a structured binding: a lambda may not capture one before C++23
-    app.report().attempt(fmt::format("{}, {}", kit::model_name(method.first), kit::solver_name(method.second)), [&] {
-      std::vector<kit::TipRun> list;
-      for (const int ny : app.options().quick ? std::vector{1, 2, 4} : std::vector{1, 2, 4, 8})
-        list.push_back(kit::run_cantilever(s.material, method.first, method.second, ny, kernels));
-      series.push_back(list);
-    });
+    app.report().attempt(
+        fmt::format("{}, {}", kit::model_name(method.first), kit::solver_name(method.second)), [&] {
+          std::vector<kit::TipRun> list;
+          for (const int ny : app.options().quick ? std::vector{1, 2, 4} : std::vector{1, 2, 4, 8})
+            list.push_back(kit::run_cantilever(s.material, method.first, method.second, ny, kernels));
+          series.push_back(list);
+        });
   if (series.empty()) return;
   kit::print_trade(app.report(), series);
   app.figure(kit::trade_figure(series));
@@ -115,11 +119,11 @@ void scene(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& ker
   const auto write = [&](const kit::FemBody& body, int frame, double) {
     kit::write_fem_obj(dir / fmt::format("plate-{:04d}.obj", frame), body);
   };
-  const auto run = kit::spin_plate(s.material, s.model, s.integrator, s.resolution, s.mesh, s.dt, s.t_end, kernels,
-                                   int(s.frames) - 1, write);
-  app.report().say("scene", "\n6. {frames} OBJ meshes of the {model} plate in {dir}.\n",
-                   {{"frames", long(run.samples.size())}, {"model", kit::model_name(s.model)},
-                    {"dir", dir.string()}});
+  const auto run = kit::spin_plate(s.material, s.model, s.integrator, s.resolution, s.mesh, s.dt, s.t_end,
+                                   kernels, int(s.frames) - 1, write);
+  app.report().say(
+      "scene", "\n6. {frames} OBJ meshes of the {model} plate in {dir}.\n",
+      {{"frames", long(run.samples.size())}, {"model", kit::model_name(s.model)}, {"dir", dir.string()}});
 }
 }  // namespace
 

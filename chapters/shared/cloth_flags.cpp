@@ -4,9 +4,9 @@
 #include <system_error>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <CLI/CLI.hpp>
 
 #include <kit/app/scene_flag.hpp>
 #include <kit/base/usage.hpp>
@@ -17,8 +17,8 @@ namespace {
 
 ClothIntegrator integrator_named(const std::string& name) {
   if (const auto integrator = cloth_integrator_names.parse(name)) return *integrator;
-  throw UsageError(
-      fmt::format("--integrator: '{}' is not one of {}", name, fmt::join(cloth_integrator_names.flags(), ", ")));
+  throw UsageError(fmt::format("--integrator: '{}' is not one of {}", name,
+                               fmt::join(cloth_integrator_names.flags(), ", ")));
 }
 
 nlohmann::json vector_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }

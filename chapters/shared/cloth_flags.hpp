@@ -26,7 +26,8 @@ struct ClothFlags {
 /// Adds --scene --integrator --dt --t-end --resolution --frames --width --height, each range
 /// checked when the flags are parsed. `more_integrators`: names --integrator also accepts
 /// (chapter 7's implicit methods), which apply_cloth_flags leaves to the caller.
-void add_cloth_flags(ChapterApp& app, ClothFlags& flags, const std::vector<std::string>& more_integrators = {});
+void add_cloth_flags(ChapterApp& app, ClothFlags& flags,
+                     const std::vector<std::string>& more_integrators = {});
 
 /// The scene --scene names: scenes_dir/NAME.toml for a bare name, else the path as given.
 /// UsageError for an unknown name (listing the shipped ones) or a bad file (file:line: key).

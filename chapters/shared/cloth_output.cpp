@@ -19,7 +19,8 @@ ClothOutputOptions cloth_output_options(const ClothFlags& flags, const CommonOpt
   return options;
 }
 
-ClothOutput write_cloth_output(const ClothScene& scene, const ClothRecording& rec, const ClothOutputOptions& options) {
+ClothOutput write_cloth_output(const ClothScene& scene, const ClothRecording& rec,
+                               const ClothOutputOptions& options) {
   ClothOutput out;
   const fs::path meshes = options.dir / "meshes";
   fs::create_directories(meshes);
@@ -28,7 +29,8 @@ ClothOutput write_cloth_output(const ClothScene& scene, const ClothRecording& re
       fs::remove(entry.path());
   FrameWriter writer(options.dir / "frames", options.width, options.height, long(rec.frames.size()), 12);
   for (std::size_t k = 0; k < rec.frames.size(); ++k) {
-    out.frames.push_back(writer.write(render_cloth(scene.grid, rec.frames[k], scene, options.width, options.height)));
+    out.frames.push_back(
+        writer.write(render_cloth(scene.grid, rec.frames[k], scene, options.width, options.height)));
     out.meshes.push_back(meshes / fmt::format("cloth_{:04d}.obj", k));
     write_cloth_obj(out.meshes.back(), scene.grid, rec.frames[k]);
   }
@@ -38,7 +40,8 @@ ClothOutput write_cloth_output(const ClothScene& scene, const ClothRecording& re
     return out;
   }
   out.player = made->player, out.sheet = made->sheet, out.movies = made->movie.files;
-  out.note = made->movie.files.empty() ? made->movie.note : "animation: " + made->movie.files.front().string();
+  out.note =
+      made->movie.files.empty() ? made->movie.note : "animation: " + made->movie.files.front().string();
   return out;
 }
 

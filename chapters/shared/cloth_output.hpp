@@ -14,9 +14,9 @@
 namespace kit {
 
 struct ClothOutputOptions {
-  std::filesystem::path dir;  ///< frames/, meshes/ and the animation go here; empty: nothing
+  std::filesystem::path dir;      ///< frames/, meshes/ and the animation go here; empty: nothing
   int width = 640, height = 480;  ///< [px]
-  double fps = 30;            ///< frames per second of the animation: frames / t_end
+  double fps = 30;                ///< frames per second of the animation: frames / t_end
 };
 
 /// Where and how large, from the flags; no folder under --no-plot.
@@ -32,6 +32,7 @@ struct ClothOutput {
 
 /// Renders and writes every recorded frame of `rec`, its mesh, then the sheet, the videos and
 /// the player. Stale frames and meshes of an earlier run in the same folders are removed first.
-ClothOutput write_cloth_output(const ClothScene& scene, const ClothRecording& rec, const ClothOutputOptions& options);
+ClothOutput write_cloth_output(const ClothScene& scene, const ClothRecording& rec,
+                               const ClothOutputOptions& options);
 
 }  // namespace kit

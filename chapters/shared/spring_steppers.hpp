@@ -37,13 +37,10 @@ inline std::function<Vec2(const Vec2&)> spring_stepper(Scheme scheme, const Spri
         return symplectic_euler_step(accel, 0.0, u, dt);
       };
     case Scheme::midpoint:
-      return [system = spring_system(spring), dt](const Vec2& u) {
-        return midpoint_step(system, 0.0, u, dt);
-      };
+      return
+          [system = spring_system(spring), dt](const Vec2& u) { return midpoint_step(system, 0.0, u, dt); };
     case Scheme::rk4:
-      return [system = spring_system(spring), dt](const Vec2& u) {
-        return rk4_step(system, 0.0, u, dt);
-      };
+      return [system = spring_system(spring), dt](const Vec2& u) { return rk4_step(system, 0.0, u, dt); };
   }
   throw std::invalid_argument("unknown scheme");
 }

@@ -18,7 +18,12 @@ double fastest(Run&& run, int samples = 5, double min_seconds = 0.2) {
   double best = INFINITY;
   for (int i = 0; i < samples; ++i) {
     double seconds = 0;
-    kit::time_per_call([&] { run(); return 0; }, seconds, min_seconds);
+    kit::time_per_call(
+        [&] {
+          run();
+          return 0;
+        },
+        seconds, min_seconds);
     best = std::min(best, seconds);
   }
   return best;
@@ -35,12 +40,14 @@ inline double last_level_cache() {
 inline double triad_bandwidth(std::size_t n, double& stream_convention) {
   std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
   const double s = 3.0;
-  const double seconds = fastest([&] {
-    double* __restrict pa = a.data();
-    const double* __restrict pb = b.data();
-    const double* __restrict pc = c.data();
-    for (std::size_t i = 0; i < n; ++i) pa[i] = pb[i] + s * pc[i];
-  }, 5, 0.0);
+  const double seconds = fastest(
+      [&] {
+        double* __restrict pa = a.data();
+        const double* __restrict pb = b.data();
+        const double* __restrict pc = c.data();
+        for (std::size_t i = 0; i < n; ++i) pa[i] = pb[i] + s * pc[i];
+      },
+      5, 0.0);
   if (a[n / 2] != 7.0) std::abort();  // the loop ran, and was not optimised away
   stream_convention = 24.0 * double(n) / seconds;
   return 32.0 * double(n) / seconds;

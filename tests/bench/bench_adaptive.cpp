@@ -30,21 +30,28 @@ int main() {
   const double period = kit::Arenstorf::period, h0 = 1e-4;
   const kit::WorkTiming counts_only{1, 0.0};  // sections 1 and 2 compare counts: one run each
 
-  fmt::print("1. Counts on Arenstorf against Hairer's dopri5.f (atol = rtol = tol, h0 = 1e-4; steps = accepted + rejected)\n");
-  struct Published { long evals; double error; };
+  fmt::print("1. Counts on Arenstorf against Hairer's dopri5.f (atol = rtol = tol, h0 = 1e-4; steps = "
+             "accepted + rejected)\n");
+  struct Published {
+    long evals;
+    double error;
+  };
   const std::vector<Published> hairer{{985, 4.4e-2}, {2161, 7.8e-5}, {5047, 2.4e-6}};
-  const auto own = kit::measure_work_precision<4>({kit::dopri5_method(arenstorf, 0.0, y0, period, h0, {1e-6, 1e-8, 1e-10})},
-                                                  y0, counts_only)[0];  // the orbit closes: y(T) = y0 to 3e-8
-  kit::Table counts({"tol", "evals (kit)", "evals (Hairer)", "ratio", "steps", "rejected", "error (kit)", "error (Hairer)"});
+  const auto own = kit::measure_work_precision<4>(
+      {kit::dopri5_method(arenstorf, 0.0, y0, period, h0, {1e-6, 1e-8, 1e-10})}, y0,
+      counts_only)[0];  // the orbit closes: y(T) = y0 to 3e-8
+  kit::Table counts({"tol", "evals (kit)", "evals (Hairer)", "ratio", "steps", "rejected", "error (kit)",
+                     "error (Hairer)"});
   for (std::size_t i = 0; i < hairer.size(); ++i) {
     const kit::WorkPoint& p = own.points[i];
     counts.add_row({kit::sci(p.tolerance, 1), std::to_string(p.rhs_evals), std::to_string(hairer[i].evals),
-                    kit::fixed(double(p.rhs_evals) / double(hairer[i].evals), 4), count(p.attempts()), count(p.rejected),
-                    kit::sci(p.error, 2), kit::sci(hairer[i].error, 2)});
+                    kit::fixed(double(p.rhs_evals) / double(hairer[i].evals), 4), count(p.attempts()),
+                    count(p.rejected), kit::sci(p.error, 2), kit::sci(hairer[i].error, 2)});
   }
   counts.print(std::cout);
 
-  fmt::print("\n2. Evaluations needed to reach an error at T on Arenstorf (reference: GSL rk8pd at 1e-14); ratio < 1: the kit needs fewer\n");
+  fmt::print("\n2. Evaluations needed to reach an error at T on Arenstorf (reference: GSL rk8pd at 1e-14); "
+             "ratio < 1: the kit needs fewer\n");
   kit::GslOptions tight;
   tight.rtol = tight.atol = 1e-14;
   const kit::Vec4 reference = kit::reference_solution(arenstorf, 0.0, y0, {period}, tight).u.back();
@@ -74,7 +81,8 @@ int main() {
   }
   work.print(std::cout);
 
-  fmt::print("\n3. Time per step on a 2-state oscillator (y'' = -y over 1000 time units, tol 1e-8): fastest of 301 interleaved runs\n");
+  fmt::print("\n3. Time per step on a 2-state oscillator (y'' = -y over 1000 time units, tol 1e-8): fastest "
+             "of 301 interleaved runs\n");
   const Oscillator oscillator;
   const kit::Vec2 start(1.0, 0.0), exact(std::cos(1000.0), -std::sin(1000.0));
   const auto timed = kit::measure_work_precision<2>(
@@ -84,7 +92,9 @@ int main() {
       exact, {301, 0.0});
   // Steps attempted: the kit and GSL count them; Boost counts only the accepted ones, so its
   // attempts come from evaluations: dopri5 (FSAL) spends 6 per attempt.
-  const auto steps = [](const kit::WorkPoint& p) { return p.attempts() ? double(*p.attempts()) : double(p.rhs_evals) / 6.0; };
+  const auto steps = [](const kit::WorkPoint& p) {
+    return p.attempts() ? double(*p.attempts()) : double(p.rhs_evals) / 6.0;
+  };
   const double kit_per_step = timed[0].points[0].seconds / steps(timed[0].points[0]);
   kit::Table overhead({"integrator", "steps", "ns per step", "kit / this"});
   for (const auto& c : timed) {

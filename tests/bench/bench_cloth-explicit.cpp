@@ -40,10 +40,10 @@ constexpr double stiffness = 2000;  // [N/m], every family
 // a mode of damping rate c = ω²μ/k needs (hω)² < 4 − 2hc; here hc ≤ 0.13 up to N = 256),
 // non-zero so that the damping term is timed and checked.
 constexpr double damping = 1e-3;
-constexpr double density = 0.1;           // [kg/m²]
-constexpr double t_end = 2;               // [s] simulated in part 3
-constexpr double bullet_h = 1.0 / 240;    // [s], a game's step
-const kit::Vec3 gravity{0, -9.81, 0};  // [m/s²]
+constexpr double density = 0.1;         // [kg/m²]
+constexpr double t_end = 2;             // [s] simulated in part 3
+constexpr double bullet_h = 1.0 / 240;  // [s], a game's step
+const kit::Vec3 gravity{0, -9.81, 0};   // [m/s²]
 
 // The sheet: horizontal (x, z) at height 1 m, held by the two corners of its j = 0 edge, so it
 // swings down under gravity: the springs work, unlike a sheet that merely hangs at rest.
@@ -261,10 +261,10 @@ int main() {
       "   Forces agree to {:.1e} relative (max |f_kit − f_plain| / max |f_plain|, disturbed sheet): {}.\n",
       worst_difference, worst_difference < 1e-12 ? "the same forces, an honest comparison" : "NOT THE SAME");
   const auto verdict = [](bool met) { return met ? "met" : "NOT met"; };
-  fmt::print(
-      "   Target at N = 128, one core: at most 3 ns per spring-step ({:.2f} ns: {}) and at least\n"
-      "   2x faster than the straightforward step ({:.2f}x: {}).\n\n",
-      step_ns[at128], verdict(step_ns[at128] <= 3), step_ratio[at128], verdict(step_ratio[at128] >= 2));
+  fmt::print("   Target at N = 128, one core: at most 3 ns per spring-step ({:.2f} ns: {}) and at least\n"
+             "   2x faster than the straightforward step ({:.2f}x: {}).\n\n",
+             step_ns[at128], verdict(step_ns[at128] <= 3), step_ratio[at128],
+             verdict(step_ratio[at128] >= 2));
   fmt::print("2. What bounds the step (bytes if node arrays leave the cache between passes; see Traffic)\n");
   kit::Table bound({"N", "working set [MB]", "B/spring", "flop/spring", "step [ns/spring]", "GB/s", "GFLOP/s",
                     "of triad", "bandwidth bound [ns]"});
@@ -281,20 +281,18 @@ int main() {
          kit::fixed(t.bytes / step_ns[k] / (bandwidth / 1e9), 2), kit::fixed(t.bytes / bandwidth * 1e9, 2)});
   }
   bound.print(std::cout);
-  fmt::print(
-      "   The working set fits in the {:.0f} MB L2 up to N = 64 and in the last-level cache above.\n"
-      "   The step uses at most {:.2f} of the triad's bandwidth: {}\n\n",
-      double(sysconf(_SC_LEVEL2_CACHE_SIZE)) / 1e6, most_bandwidth,
-      most_bandwidth < 0.5 ? "memory is not what bounds it,\n"
-                             "   the arithmetic is (a square root and a divide per spring)."
-                           : "memory bandwidth is close to bounding it.");
+  fmt::print("   The working set fits in the {:.0f} MB L2 up to N = 64 and in the last-level cache above.\n"
+             "   The step uses at most {:.2f} of the triad's bandwidth: {}\n\n",
+             double(sysconf(_SC_LEVEL2_CACHE_SIZE)) / 1e6, most_bandwidth,
+             most_bandwidth < 0.5 ? "memory is not what bounds it,\n"
+                                    "   the arithmetic is (a square root and a divide per spring)."
+                                  : "memory bandwidth is close to bounding it.");
   fmt::print("3. Bullet {}.{:02d} soft-body cloth (float) against the kit, {} s simulated from rest\n",
              btGetVersion() / 100, btGetVersion() % 100, t_end);
-  fmt::print(
-      "   The kit: symplectic Euler at 0.9 of its stable step for omega_max (power iteration).\n"
-      "   Bullet: h = 1/240 s, 10 solver iterations, and its defaults (1 iteration).\n"
-      "   Strain = (l - L0)/L0 at t = {} s.\n",
-      t_end);
+  fmt::print("   The kit: symplectic Euler at 0.9 of its stable step for omega_max (power iteration).\n"
+             "   Bullet: h = 1/240 s, 10 solver iterations, and its defaults (1 iteration).\n"
+             "   Strain = (l - L0)/L0 at t = {} s.\n",
+             t_end);
   for (std::size_t k = 0; k < 3; ++k)
     fmt::print("   N = {}: omega_max = {:.3g} rad/s, omega_max^2 = {:.2f} k/m_node, h = {:.2e} s\n", sizes[k],
                sheets[k].omega_max,
@@ -324,15 +322,14 @@ int main() {
   fmt::print("   kit / this: the kit's CPU time per simulated second over that cloth's (above 1: it is\n"
              "   faster than the kit).\n");
   const double kit_cost = kit_at128.seconds / t_end, bullet_cost = bullet_at128.seconds / t_end;
-  fmt::print(
-      "   At N = 128, Bullet with 10 iterations costs {:.2f} s of CPU per simulated second, the kit\n"
-      "   {:.2f} s:"
-      " {} is {:.1f}x faster. At t = {} s Bullet's structural links stretch {}, the kit's {}:\n"
-      "   {} stretches more.\n",
-      bullet_cost, kit_cost, bullet_cost < kit_cost ? "Bullet" : "the kit",
-      std::max(bullet_cost, kit_cost) / std::min(bullet_cost, kit_cost), t_end,
-      strain_text(bullet_at128.structural), strain_text(kit_at128.structural),
-      !(kit_at128.structural >= bullet_at128.structural) ? "Bullet" : "the kit");
+  fmt::print("   At N = 128, Bullet with 10 iterations costs {:.2f} s of CPU per simulated second, the kit\n"
+             "   {:.2f} s:"
+             " {} is {:.1f}x faster. At t = {} s Bullet's structural links stretch {}, the kit's {}:\n"
+             "   {} stretches more.\n",
+             bullet_cost, kit_cost, bullet_cost < kit_cost ? "Bullet" : "the kit",
+             std::max(bullet_cost, kit_cost) / std::min(bullet_cost, kit_cost), t_end,
+             strain_text(bullet_at128.structural), strain_text(kit_at128.structural),
+             !(kit_at128.structural >= bullet_at128.structural) ? "Bullet" : "the kit");
   fmt::print(
       "   Bullet at h = 1/240 s is what a game programmer would use. The explicit kit must take steps\n"
       "   {:.0f}x smaller (h = {:.1e} s) to stay stable at k = {} N/m: the case for the implicit chapter.\n",

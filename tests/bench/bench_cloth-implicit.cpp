@@ -31,8 +31,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include <Eigen/IterativeLinearSolvers>
 #include <fmt/format.h>
+#include <Eigen/IterativeLinearSolvers>
 
 #include <kit/app/table.hpp>
 #include <kit/base/stopwatch.hpp>
@@ -47,16 +47,17 @@
 #include <kit/cloth/cloth_system.hpp>
 
 #include "bandwidth.hpp"
-#include "machine_note.hpp"
 #include "bullet_cloth.hpp"
 #include "cloth_assembly.hpp"
 #include "cloth_jacobian.hpp"
 #include "cloth_kernels.hpp"
 #include "cloth_pcg.hpp"
 #include "cpu_clock.hpp"
+#include "machine_note.hpp"
 
 namespace {
-using kit::bench::CpuClock, kit::bench::load_average;  // every time below is read from it; the triads keep bandwidth.hpp's wall clock
+using kit::bench::CpuClock,
+    kit::bench::load_average;  // every time below is read from it; the triads keep bandwidth.hpp's wall clock
 
 // Fastest of `samples` timings of `run` [CPU s per call], each repeating it for at least
 // `min_seconds`: kit_bench::fastest on the CPU clock.
@@ -75,18 +76,18 @@ double fastest(Run&& run, int samples, double min_seconds) {
   return best;
 }
 
-constexpr int n = 81;                 // nodes along each side: 6561 in all, Liu et al.'s sheet
-constexpr double stiffness = 1e4;     // [N/m], every family
+constexpr int n = 81;              // nodes along each side: 6561 in all, Liu et al.'s sheet
+constexpr double stiffness = 1e4;  // [N/m], every family
 // [N·s/m], every family: μ/K = 1e-7 s, far below every step here, so that it moves neither the
 // explicit stable step nor the motion; non-zero so that the damping blocks are assembled and timed.
 constexpr double damping = 1e-3;
-constexpr double density = 0.1;       // [kg/m²]
-constexpr double h = 1.0 / 30;        // [s], one frame
-constexpr double t_end = 1;           // [s] simulated in parts 2 to 4
-constexpr double tolerance = 1e-3;    // relative residual of each CG solve
-constexpr int warm_steps = 15;        // steps of h before part 1's state: mid-swing, a typical solve
-constexpr double target_ms = 25;      // per implicit step, one core
-constexpr double target_ratio = 10;   // implicit at least this much cheaper per simulated second
+constexpr double density = 0.1;        // [kg/m²]
+constexpr double h = 1.0 / 30;         // [s], one frame
+constexpr double t_end = 1;            // [s] simulated in parts 2 to 4
+constexpr double tolerance = 1e-3;     // relative residual of each CG solve
+constexpr int warm_steps = 15;         // steps of h before part 1's state: mid-swing, a typical solve
+constexpr double target_ms = 25;       // per implicit step, one core
+constexpr double target_ratio = 10;    // implicit at least this much cheaper per simulated second
 const kit::Vec3 gravity{0, -9.81, 0};  // [m/s²]
 
 const kit::ImplicitKernels implicit_kernels{&kit::spring_stiffness_block, &kit::assemble_implicit_system,
@@ -133,12 +134,12 @@ double relative_difference(const Eigen::VectorXd& p, const Eigen::VectorXd& q) {
 // --- 1. one implicit step, piece by piece --------------------------------------------------------
 struct StepSplit {
   double jacobian = 0, assembly = 0, forces_rhs = 0, solve = 0, whole = 0;  // [s], fastest samples
-  double setup = 0;         // [s], of the solve: the multigrid's set-up for this A (mg only)
+  double setup = 0;          // [s], of the solve: the multigrid's set-up for this A (mg only)
   double slowest_whole = 0;  // [s]: the spread of the samples, the timing noise
-  int iterations = 0;       // CG iterations of the solve
-  double residual = 0;      // its final relative residual
-  Eigen::VectorXd dv;       // its answer
-  Eigen::VectorXd exact;    // mg only: the same system solved to 1e-10
+  int iterations = 0;        // CG iterations of the solve
+  double residual = 0;       // its final relative residual
+  Eigen::VectorXd dv;        // its answer
+  Eigen::VectorXd exact;     // mg only: the same system solved to 1e-10
 };
 
 // Timings of several pieces of work taken in turn, sample after sample, so that a busy spell of
@@ -166,8 +167,8 @@ StepSplit split_step(kit::ClothSystem& cloth, const State& state, kit::ImplicitS
   std::vector<kit::Mat3> stiffness(springs.size());
   const auto jacobian = [&] {
     for (std::size_t s = 0; s < springs.size(); ++s)
-      stiffness[s] = implicit_kernels.stiffness_block(x.row(springs.a[s]), x.row(springs.b[s]), springs.rest[s],
-                                                      springs.stiffness[s], true);
+      stiffness[s] = implicit_kernels.stiffness_block(x.row(springs.a[s]), x.row(springs.b[s]),
+                                                      springs.rest[s], springs.stiffness[s], true);
   };
   kit::NodeArray f(x.rows(), 3);
   Eigen::VectorXd b, pull;
@@ -177,7 +178,9 @@ StepSplit split_step(kit::ClothSystem& cloth, const State& state, kit::ImplicitS
     b = h * (kit::flatten(f) + h * pull);
   };
   kit::ImplicitMatrix matrix(springs, x.rows(), cloth.pins());
-  const auto assemble = [&] { matrix.assemble(springs, x, stiffness, cloth.masses(), cloth.scene().drag, h); };
+  const auto assemble = [&] {
+    matrix.assemble(springs, x, stiffness, cloth.masses(), cloth.scene().drag, h);
+  };
   jacobian(), forces_rhs(), assemble();  // each piece's inputs, before any is timed
 
   std::function<void()> solve;
@@ -199,11 +202,18 @@ StepSplit split_step(kit::ClothSystem& cloth, const State& state, kit::ImplicitS
       result = kit::multigrid_pcg(constrained.matrix, bc, filters, multigrid, tolerance, 2000);
     };
   else
-    solve = [&] { cg.compute(constrained.matrix); result.x = cg.solve(bc); };
+    solve = [&] {
+      cg.compute(constrained.matrix);
+      result.x = cg.solve(bc);
+    };
   const auto setup = [&] { multigrid.setup(constrained.matrix); };
 
-  kit::BackwardEulerStepper stepper(cloth, kit::ImplicitMethod::linearised, settings_for(solver), implicit_kernels);
-  const auto whole = [&] { restore(cloth, state); stepper.step(cloth, h); };
+  kit::BackwardEulerStepper stepper(cloth, kit::ImplicitMethod::linearised, settings_for(solver),
+                                    implicit_kernels);
+  const auto whole = [&] {
+    restore(cloth, state);
+    stepper.step(cloth, h);
+  };
   const auto copy = [&] { restore(cloth, state); };
   std::vector<std::function<void()>> pieces{jacobian, forces_rhs, assemble, solve, whole, copy};
   if (solver == kit::ImplicitSolver::mg) pieces.push_back(setup);
@@ -235,14 +245,14 @@ constexpr int samples = 5;  // the sheet's mean drop at t = 0.2, 0.4, ..., 1 s
 
 struct Run {
   std::string name;
-  double h = 0;          // [s]
+  double h = 0;  // [s]
   long steps = 0;
-  double seconds = 0;    // CPU time of the steps [s]
-  kit::NodeArray x;      // positions at t_end
+  double seconds = 0;          // CPU time of the steps [s]
+  kit::NodeArray x;            // positions at t_end
   double drops[samples] = {};  // mean drop at the sample times [m]
-  double kinetic = NAN;  // [J] at t_end
-  double energy = NAN;   // kinetic + springs + gravity at t_end [J] (kit's cloths only)
-  double strain = NAN;   // largest structural (l − L0)/L0 at t_end
+  double kinetic = NAN;        // [J] at t_end
+  double energy = NAN;         // kinetic + springs + gravity at t_end [J] (kit's cloths only)
+  double strain = NAN;         // largest structural (l − L0)/L0 at t_end
   double cg_per_step = NAN, cg_max = NAN;
   double first_step = NAN;  // [s], Liu: with its factorisation
 };
@@ -271,7 +281,8 @@ Run implicit_run(const kit::ClothScene& scene, const kit::Springs& springs, cons
   const auto stepper = make(cloth);
   Run run;
   run.name = name, run.h = h, run.steps = std::lround(t_end / h);
-  timed_steps(run, [&] { stepper->step(cloth, h); }, [&]() -> const kit::NodeArray& { return cloth.x; });
+  timed_steps(
+      run, [&] { stepper->step(cloth, h); }, [&]() -> const kit::NodeArray& { return cloth.x; });
   run.x = cloth.x, run.kinetic = cloth.kinetic(), run.energy = cloth.kinetic() + cloth.potential();
   run.strain = cloth.max_strain();
   if (stepper->work.solves > 0) {
@@ -285,8 +296,9 @@ Run explicit_run(const kit::ClothScene& scene, const kit::Springs& springs, cons
   kit::ClothSystem cloth(scene, springs, kit::student_cloth_kernels());
   Run run;
   run.name = name, run.steps = long(std::ceil(t_end / dt)), run.h = t_end / double(run.steps);
-  timed_steps(run, [&] { cloth.step(kit::ClothIntegrator::symplectic_euler, run.h); },
-              [&]() -> const kit::NodeArray& { return cloth.x; });
+  timed_steps(
+      run, [&] { cloth.step(kit::ClothIntegrator::symplectic_euler, run.h); },
+      [&]() -> const kit::NodeArray& { return cloth.x; });
   run.x = cloth.x, run.kinetic = cloth.kinetic(), run.energy = cloth.kinetic() + cloth.potential();
   run.strain = cloth.max_strain();
   return run;
@@ -296,7 +308,8 @@ Run bullet_run(const char* name, int iterations, double step, const Eigen::Vecto
   kit_bench::BulletCloth cloth(n, density * 1.0, gravity, iterations);  // 1 m²
   Run run;
   run.name = name, run.h = step, run.steps = std::lround(t_end / step);
-  timed_steps(run, [&] { cloth.step(step); }, [&] { return cloth.positions(); });
+  timed_steps(
+      run, [&] { cloth.step(step); }, [&] { return cloth.positions(); });
   run.x = cloth.positions();
   double links = 0;
   cloth.max_strain(run.strain, links);
@@ -334,17 +347,18 @@ int main() {
   const kit::ClothScene scene = make_scene();
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   kit::ClothSystem cloth(scene, springs, kit::student_cloth_kernels());
-  fmt::print(
-      "The sheet: {}x{} nodes ({}), {} springs (structural {}, shear {}, bend {}), K = {:.0e} N/m, mu = {:.0e} N.s/m,\n"
-      "{} kg/m^2 over 1 m^2, gravity, corners (0, 0) and ({}, 0) pinned; h = 1/30 s; CG to {:.0e} relative.\n\n",
-      n, n, scene.grid.nodes(), springs.size(), springs.count(kit::SpringKind::structural),
-      springs.count(kit::SpringKind::shear), springs.count(kit::SpringKind::bend), stiffness, damping, density,
-      n - 1, tolerance);
+  fmt::print("The sheet: {}x{} nodes ({}), {} springs (structural {}, shear {}, bend {}), K = {:.0e} N/m, mu "
+             "= {:.0e} N.s/m,\n"
+             "{} kg/m^2 over 1 m^2, gravity, corners (0, 0) and ({}, 0) pinned; h = 1/30 s; CG to {:.0e} "
+             "relative.\n\n",
+             n, n, scene.grid.nodes(), springs.size(), springs.count(kit::SpringKind::structural),
+             springs.count(kit::SpringKind::shear), springs.count(kit::SpringKind::bend), stiffness, damping,
+             density, n - 1, tolerance);
 
   // --- 1 --------------------------------------------------------------------------------------
   {
-    kit::BackwardEulerStepper warm(cloth, kit::ImplicitMethod::linearised, settings_for(kit::ImplicitSolver::pcg),
-                                   implicit_kernels);
+    kit::BackwardEulerStepper warm(cloth, kit::ImplicitMethod::linearised,
+                                   settings_for(kit::ImplicitSolver::pcg), implicit_kernels);
     for (int k = 0; k < warm_steps; ++k) warm.step(cloth, h);
   }
   const State state{cloth.x, cloth.v, cloth.t};
@@ -352,42 +366,51 @@ int main() {
   const StepSplit cg = split_step(cloth, state, kit::ImplicitSolver::cg);
   const StepSplit mg = split_step(cloth, state, kit::ImplicitSolver::mg);
   fmt::print(
-      "1. One linearised backward Euler step (Baraff & Witkin), at t = {:.2f} s of the swing (after {} steps\n"
+      "1. One linearised backward Euler step (Baraff & Witkin), at t = {:.2f} s of the swing (after {} "
+      "steps\n"
       "   from rest), each piece timed alone on that state, then the whole BackwardEulerStepper::step\n",
       state.t, warm_steps);
-  kit::Table split({"solver", "Jacobian blocks [ms]", "assembly [ms]", "solve [ms]", "of which MG set-up", "rest [ms]",
-                    "of which f, b", "step [ms]", "slowest step", "CG iterations", "residual", "ms / iteration"});
+  kit::Table split({"solver", "Jacobian blocks [ms]", "assembly [ms]", "solve [ms]", "of which MG set-up",
+                    "rest [ms]", "of which f, b", "step [ms]", "slowest step", "CG iterations", "residual",
+                    "ms / iteration"});
   for (const auto& [name, s] : {std::pair<const char*, const StepSplit&>{"filtered PCG (ex 7.3)", pcg},
-                                {"Eigen CG, pins eliminated", cg}, {"multigrid PCG", mg}}) {
+                                {"Eigen CG, pins eliminated", cg},
+                                {"multigrid PCG", mg}}) {
     const double rest = s.whole - s.jacobian - s.assembly - s.solve;
-    split.add_row({name, kit::fixed(1e3 * s.jacobian, 2), kit::fixed(1e3 * s.assembly, 2), kit::fixed(1e3 * s.solve, 2),
-                   s.setup > 0 ? kit::fixed(1e3 * s.setup, 2) : "", kit::fixed(1e3 * rest, 2),
-                   kit::fixed(1e3 * s.forces_rhs, 2), kit::fixed(1e3 * s.whole, 2),
-                   kit::fixed(1e3 * s.slowest_whole, 2),
-                   std::to_string(s.iterations), fmt::format("{:.1e}", s.residual),
+    split.add_row({name, kit::fixed(1e3 * s.jacobian, 2), kit::fixed(1e3 * s.assembly, 2),
+                   kit::fixed(1e3 * s.solve, 2), s.setup > 0 ? kit::fixed(1e3 * s.setup, 2) : "",
+                   kit::fixed(1e3 * rest, 2), kit::fixed(1e3 * s.forces_rhs, 2), kit::fixed(1e3 * s.whole, 2),
+                   kit::fixed(1e3 * s.slowest_whole, 2), std::to_string(s.iterations),
+                   fmt::format("{:.1e}", s.residual),
                    kit::fixed(1e3 * s.solve / std::max(s.iterations, 1), 3)});
   }
   split.print(std::cout);
   fmt::print(
-      "   Each time is the fastest of 5 samples, the pieces and the step sampled in turn; 'slowest step' is the\n"
-      "   slowest sample, the noise of this machine. rest: the step less the three pieces: the forces f_n and\n"
+      "   Each time is the fastest of 5 samples, the pieces and the step sampled in turn; 'slowest step' is "
+      "the\n"
+      "   slowest sample, the noise of this machine. rest: the step less the three pieces: the forces f_n "
+      "and\n"
       "   b = h (f_n + h df/dx v_n) (timed alone in 'of which f, b'), the filters or the pins' elimination,\n"
       "   copies, and the update v += dv, x += h v.\n"
-      "   CG iterations: the filtered PCG's count of products with A; Eigen's iterations(), one less than the\n"
+      "   CG iterations: the filtered PCG's count of products with A; Eigen's iterations(), one less than "
+      "the\n"
       "   products of its loop (it stops inside the last one). The two solvers' dv differ by {:.1e} of the\n"
       "   largest |dv|{}.\n",
       relative_difference(pcg.dv, cg.dv),
       relative_difference(pcg.dv, cg.dv) == 0
           ? ": both are CG preconditioned by diag(A) on the free nodes, with the same arithmetic"
           : ", each solved to its own residual");
-  fmt::print(
-      "   Error of dv against the same system solved to 1e-10, in the largest |dv|: diagonal CG {:.1e}, multigrid\n"
-      "   PCG {:.1e}. Both stop at 1e-3 of b in residual, not in error: the residual hides error in the smooth,\n"
-      "   slowly converging modes (small eigenvalues of A), which diagonal CG leaves and multigrid removes first.\n",
-      relative_difference(cg.dv, mg.exact), relative_difference(mg.dv, mg.exact));
+  fmt::print("   Error of dv against the same system solved to 1e-10, in the largest |dv|: diagonal CG "
+             "{:.1e}, multigrid\n"
+             "   PCG {:.1e}. Both stop at 1e-3 of b in residual, not in error: the residual hides error in "
+             "the smooth,\n"
+             "   slowly converging modes (small eigenvalues of A), which diagonal CG leaves and multigrid "
+             "removes first.\n",
+             relative_difference(cg.dv, mg.exact), relative_difference(mg.dv, mg.exact));
   const double best_ms = 1e3 * std::min({pcg.whole, cg.whole, mg.whole});
-  fmt::print("   Target: at most {} ms a step on one core (Liu et al. report 50 ms a frame): {:.1f} ms, {}.\n\n",
-             target_ms, best_ms, verdict(best_ms <= target_ms));
+  fmt::print(
+      "   Target: at most {} ms a step on one core (Liu et al. report 50 ms a frame): {:.1f} ms, {}.\n\n",
+      target_ms, best_ms, verdict(best_ms <= target_ms));
 
   // Ex 7.2's triplets against the scatter, on the same inputs.
   {
@@ -414,20 +437,21 @@ int main() {
     const kit::SparseMatrix difference = naive - scatter.matrix;
     const double a_difference = difference.norm() / scatter.matrix.norm();
     const double b_difference = relative_difference(b_naive, b_scatter);
-    const bool same = naive.nonZeros() == scatter.matrix.nonZeros() && a_difference < 1e-13 && b_difference < 1e-13;
+    const bool same =
+        naive.nonZeros() == scatter.matrix.nonZeros() && a_difference < 1e-13 && b_difference < 1e-13;
     const double triplets = fastest(by_triplets, 5, 0.2), pattern = fastest(by_scatter, 5, 0.2);
-    fmt::print(
-        "   A and b of the step, {} stored entries of A ({:.1f} per row), the same inputs:\n", scatter.matrix.nonZeros(),
-        double(scatter.matrix.nonZeros()) / double(scatter.matrix.rows()));
+    fmt::print("   A and b of the step, {} stored entries of A ({:.1f} per row), the same inputs:\n",
+               scatter.matrix.nonZeros(), double(scatter.matrix.nonZeros()) / double(scatter.matrix.rows()));
     kit::Table assembly({"assembly", "ms", "triplets / scatter"});
-    assembly.add_row({"ex 7.2: triplets, setFromTriplets", kit::fixed(1e3 * triplets, 2), kit::fixed(triplets / pattern, 1)});
+    assembly.add_row({"ex 7.2: triplets, setFromTriplets", kit::fixed(1e3 * triplets, 2),
+                      kit::fixed(triplets / pattern, 1)});
     assembly.add_row({"ImplicitMatrix: pattern once, scatter", kit::fixed(1e3 * pattern, 2), ""});
     assembly.print(std::cout);
-    fmt::print(
-        "   Checked first: same pattern ({} and {} entries), ||A_triplets - A_scatter||_F / ||A||_F = {:.1e},\n"
-        "   b to {:.1e} relative: {}.\n\n",
-        naive.nonZeros(), scatter.matrix.nonZeros(), a_difference, b_difference,
-        same ? "the same system, an honest comparison" : "NOT THE SAME");
+    fmt::print("   Checked first: same pattern ({} and {} entries), ||A_triplets - A_scatter||_F / ||A||_F = "
+               "{:.1e},\n"
+               "   b to {:.1e} relative: {}.\n\n",
+               naive.nonZeros(), scatter.matrix.nonZeros(), a_difference, b_difference,
+               same ? "the same system, an honest comparison" : "NOT THE SAME");
     if (!same) return 1;
   }
 
@@ -436,11 +460,12 @@ int main() {
   // bracketed around the prediction from omega_max at rest.
   const kit::ClothScene bare = kit::springs_only(scene);
   const kit::Springs bare_springs = kit::build_springs(bare.grid, bare.springs);
-  const kit::OmegaMax omega = kit::omega_max(bare_springs, cloth.masses(), scene.grid.rest_positions(), cloth.pins(), 1e-6);
+  const kit::OmegaMax omega =
+      kit::omega_max(bare_springs, cloth.masses(), scene.grid.rest_positions(), cloth.pins(), 1e-6);
   const double predicted = kit::predicted_dt_max(kit::ClothIntegrator::symplectic_euler, omega.omega);
-  const kit::MeasuredDtMax measured = kit::measure_dt_max(bare, bare_springs, kit::student_cloth_kernels(),
-                                                          kit::ClothIntegrator::symplectic_euler, 0.5 * predicted,
-                                                          2 * predicted);
+  const kit::MeasuredDtMax measured =
+      kit::measure_dt_max(bare, bare_springs, kit::student_cloth_kernels(),
+                          kit::ClothIntegrator::symplectic_euler, 0.5 * predicted, 2 * predicted);
   if (!(measured.stable > 0)) {
     fmt::print(stderr, "bench: no stable step measured for symplectic Euler\n");
     return 1;
@@ -449,19 +474,20 @@ int main() {
 
   std::vector<Run> runs;
   runs.push_back(implicit_run(scene, springs, "backward Euler, filtered PCG", [](const kit::ClothSystem& c) {
-    return std::make_unique<kit::BackwardEulerStepper>(c, kit::ImplicitMethod::linearised,
-                                                       settings_for(kit::ImplicitSolver::pcg), implicit_kernels);
+    return std::make_unique<kit::BackwardEulerStepper>(
+        c, kit::ImplicitMethod::linearised, settings_for(kit::ImplicitSolver::pcg), implicit_kernels);
   }));
   runs.push_back(implicit_run(scene, springs, "backward Euler, Eigen CG", [](const kit::ClothSystem& c) {
-    return std::make_unique<kit::BackwardEulerStepper>(c, kit::ImplicitMethod::linearised,
-                                                       settings_for(kit::ImplicitSolver::cg), implicit_kernels);
+    return std::make_unique<kit::BackwardEulerStepper>(
+        c, kit::ImplicitMethod::linearised, settings_for(kit::ImplicitSolver::cg), implicit_kernels);
   }));
   runs.push_back(implicit_run(scene, springs, "backward Euler, multigrid PCG", [](const kit::ClothSystem& c) {
-    return std::make_unique<kit::BackwardEulerStepper>(c, kit::ImplicitMethod::linearised,
-                                                       settings_for(kit::ImplicitSolver::mg), implicit_kernels);
+    return std::make_unique<kit::BackwardEulerStepper>(
+        c, kit::ImplicitMethod::linearised, settings_for(kit::ImplicitSolver::mg), implicit_kernels);
   }));
-  runs.push_back(implicit_run(scene, springs, "Liu et al., 10 iterations",
-                              [](const kit::ClothSystem& c) { return std::make_unique<kit::LiuStepper>(c, 10); }));
+  runs.push_back(implicit_run(scene, springs, "Liu et al., 10 iterations", [](const kit::ClothSystem& c) {
+    return std::make_unique<kit::LiuStepper>(c, 10);
+  }));
   runs.push_back(explicit_run(scene, springs, "symplectic Euler, 0.9 dt_max", explicit_dt));
   runs.push_back(bullet_run("Bullet, 10 iterations", 10, h, cloth.masses()));
   runs.push_back(bullet_run("Bullet, defaults", 0, h, cloth.masses()));
@@ -476,17 +502,19 @@ int main() {
 
   fmt::print(
       "2. Cost per simulated second at K = {:.0e} N/m, from rest over {} s\n"
-      "   Symplectic Euler's stable step on the springs alone (undamped, no gravity): omega_max = {:.4g} rad/s\n"
+      "   Symplectic Euler's stable step on the springs alone (undamped, no gravity): omega_max = {:.4g} "
+      "rad/s\n"
       "   (power iteration, {} iterations), predicted 2/omega_max = {:.3e} s, measured {:.3e} s (bisection,\n"
       "   {} runs of at most 2000 steps); run at 0.9 of the measured step.\n",
       stiffness, t_end, omega.omega, omega.iterations, predicted, measured.stable, measured.runs);
   kit::Table cost({"method", "h [s]", "steps", "ms / step", "CPU s per simulated s", "symplectic / this",
                    "CG iterations / step (max)"});
   for (const Run* r : {&runs[0], &runs[1], &runs[2], &runs[3], &runs[4]})
-    cost.add_row({r->name, fmt::format("{:.3e}", r->h), std::to_string(r->steps),
-                  kit::fixed(1e3 * r->seconds / double(r->steps), 3), kit::fixed(r->seconds / t_end, 3),
-                  r == &explicit_euler ? "" : kit::fixed(explicit_euler.seconds / r->seconds, 1),
-                  std::isfinite(r->cg_per_step) ? fmt::format("{:.0f} ({:.0f})", r->cg_per_step, r->cg_max) : ""});
+    cost.add_row(
+        {r->name, fmt::format("{:.3e}", r->h), std::to_string(r->steps),
+         kit::fixed(1e3 * r->seconds / double(r->steps), 3), kit::fixed(r->seconds / t_end, 3),
+         r == &explicit_euler ? "" : kit::fixed(explicit_euler.seconds / r->seconds, 1),
+         std::isfinite(r->cg_per_step) ? fmt::format("{:.0f} ({:.0f})", r->cg_per_step, r->cg_max) : ""});
   cost.print(std::cout);
   const double ratio = explicit_euler.seconds / std::min({runs[0].seconds, runs[1].seconds, runs[2].seconds});
   fmt::print(
@@ -500,7 +528,8 @@ int main() {
       "3. Liu et al. 2013, 10 local/global iterations a step (LiuStepper): {:.2f} ms a step ({:.3f} ms an\n"
       "   iteration: the springs' directions, then three triangular solve pairs), after a first step of\n"
       "   {:.2f} ms that factorises M + h^2 L once (sparse Cholesky, SimplicialLDLT): {:.1f}x faster than a\n"
-      "   backward Euler step with the filtered PCG ({:.2f} ms in the run from rest), {:.2f}x the time of one\n"
+      "   backward Euler step with the filtered PCG ({:.2f} ms in the run from rest), {:.2f}x the time of "
+      "one\n"
       "   with the multigrid PCG ({:.2f} ms).\n\n",
       1e3 * liu_step, 1e3 * liu_step / 10, 1e3 * liu.first_step,
       runs[0].seconds / double(runs[0].steps) / liu_step, 1e3 * runs[0].seconds / double(runs[0].steps),
@@ -513,15 +542,19 @@ int main() {
     const kit::ClothSystem at_rest(scene, springs, kit::student_cloth_kernels());
     rest_energy = at_rest.potential();
   }
-  fmt::print(
-      "4. Bullet {}.{:02d} soft-body cloth (float; structural and shear links, no bend) at the same h (and at a\n"
-      "   game's 1/240 s), and every method's sheet against the reference, symplectic Euler at half the explicit\n"
-      "   step (h = {:.3e} s, {:.1f} s of CPU). Drops from the height at rest (1 m). The sheet, its bend springs\n"
-      "   as stiff as the others, swings about the line through its two pins almost as a rigid plate (a mean\n"
-      "   drop of 0.5 sin(angle)).\n",
-      btGetVersion() / 100, btGetVersion() % 100, reference.h, reference.seconds);
+  fmt::print("4. Bullet {}.{:02d} soft-body cloth (float; structural and shear links, no bend) at the same h "
+             "(and at a\n"
+             "   game's 1/240 s), and every method's sheet against the reference, symplectic Euler at half "
+             "the explicit\n"
+             "   step (h = {:.3e} s, {:.1f} s of CPU). Drops from the height at rest (1 m). The sheet, its "
+             "bend springs\n"
+             "   as stiff as the others, swings about the line through its two pins almost as a rigid plate "
+             "(a mean\n"
+             "   drop of 0.5 sin(angle)).\n",
+             btGetVersion() / 100, btGetVersion() % 100, reference.h, reference.seconds);
   std::vector<std::string> drop_headers{"mean drop [m] at t ="};
-  for (int q = 0; q < samples; ++q) drop_headers.push_back(fmt::format("{:.1f} s", t_end * (q + 1) / samples));
+  for (int q = 0; q < samples; ++q)
+    drop_headers.push_back(fmt::format("{:.1f} s", t_end * (q + 1) / samples));
   kit::Table swing(drop_headers);
   const auto add_drops = [&](const Run& r) {
     std::vector<std::string> row{r.name};
@@ -539,8 +572,9 @@ int main() {
                        "RMS to reference [m]", "kinetic [mJ]", "energy lost [mJ]", "max structural strain"});
   const auto add = [&](const Run& r) {
     accuracy.add_row({r.name, fmt::format("{:.3e}", r.h), kit::fixed(1e3 * r.seconds / double(r.steps), 3),
-                      kit::fixed(lowest_drop(r.x), 4), kit::fixed(mean_drop(r.x), 4), kit::fixed(turned(r.x), 0),
-                      kit::fixed(rms_distance(r.x, reference.x), 4), kit::fixed(1e3 * r.kinetic, 2),
+                      kit::fixed(lowest_drop(r.x), 4), kit::fixed(mean_drop(r.x), 4),
+                      kit::fixed(turned(r.x), 0), kit::fixed(rms_distance(r.x, reference.x), 4),
+                      kit::fixed(1e3 * r.kinetic, 2),
                       std::isfinite(r.energy) ? kit::fixed(1e3 * (rest_energy - r.energy), 2) : "",
                       strain_text(r.strain)});
   };
@@ -549,14 +583,17 @@ int main() {
   accuracy.print(std::cout);
   const double reference_error = rms_distance(explicit_euler.x, reference.x);
   fmt::print(
-      "   The reference's own error is about its distance to the explicit run at twice its step: {:.1e} m RMS.\n"
-      "   Bullet, 10 iterations at h = 1/30 s: {:.3f} ms a step, {:.1f}x {} than a backward Euler step with the\n"
+      "   The reference's own error is about its distance to the explicit run at twice its step: {:.1e} m "
+      "RMS.\n"
+      "   Bullet, 10 iterations at h = 1/30 s: {:.3f} ms a step, {:.1f}x {} than a backward Euler step with "
+      "the\n"
       "   multigrid PCG; its structural links end at {}:\n   {}.\n\n",
       reference_error, 1e3 * bullet.seconds / double(bullet.steps),
       std::max(bullet.seconds, multigrid_run.seconds) / std::min(bullet.seconds, multigrid_run.seconds),
       bullet.seconds < multigrid_run.seconds ? "faster" : "slower", strain_text(bullet.strain),
-      bullet.strain > 1 ? "more than twice their length, 10 projections a step across 80 cells do not hold the sheet"
-                         : "within twice their length");
+      bullet.strain > 1
+          ? "more than twice their length, 10 projections a step across 80 cells do not hold the sheet"
+          : "within twice their length");
 
   // --- 5 --------------------------------------------------------------------------------------
   // One CG iteration reads the matrix once (values 8 B and column indices 4 B per stored entry,
@@ -578,20 +615,23 @@ int main() {
   double coarse_blocks = 0;
   for (int l = 1; l < levels.levels(); ++l) coarse_blocks += double(levels.level_blocks(l));
   const double nodes = rows / 3;
-  const double mg_bytes = pcg_bytes + 2 * (52 * entries / 9 + 48 * nodes) + 6 * 16 * nodes + 2 * 52 * coarse_blocks;
+  const double mg_bytes =
+      pcg_bytes + 2 * (52 * entries / 9 + 48 * nodes) + 6 * 16 * nodes + 2 * 52 * coarse_blocks;
   // Flops: 2 per stored entry for A p; the V-cycle 2 per entry of A twice, and of each coarse grid.
   const double cg_flops = 2 * entries, mg_flops = cg_flops + 2 * 2 * (entries + 9 * coarse_blocks);
   const double working_set = matrix_bytes + 8 * 8 * rows;  // A and the five vectors, P⁻¹, b
   // The same triad over three arrays that together hold the solve's working set: the bandwidth of
   // the cache level the solve runs from.
   double in_cache_stream = 0;
-  const double in_cache =
-      kit_bench::triad_bandwidth(std::size_t(working_set / 24), in_cache_stream);
+  const double in_cache = kit_bench::triad_bandwidth(std::size_t(working_set / 24), in_cache_stream);
   fmt::print(
-      "5. What bounds the solve: A has {:.0f} rows and {:.0f} stored entries ({:.1f} MB with its indices); the\n"
-      "   solve's working set (A and eight vectors) is {:.1f} MB. A triad over three arrays of that total runs at\n"
+      "5. What bounds the solve: A has {:.0f} rows and {:.0f} stored entries ({:.1f} MB with its indices); "
+      "the\n"
+      "   solve's working set (A and eight vectors) is {:.1f} MB. A triad over three arrays of that total "
+      "runs at\n"
       "   {:.1f} GB/s (from memory: {:.1f} GB/s). One iteration moves at least {:.1f} MB (CG), {:.1f} MB\n"
-      "   (filtered PCG, its filters too) or {:.1f} MB (multigrid PCG: a V-cycle over {} grids, {:.0f} coarse\n"
+      "   (filtered PCG, its filters too) or {:.1f} MB (multigrid PCG: a V-cycle over {} grids, {:.0f} "
+      "coarse\n"
       "   blocks), and does {:.1f} Mflop (2 per stored entry in A p; multigrid {:.1f}).\n",
       rows, entries, matrix_bytes / 1e6, working_set / 1e6, in_cache / 1e9, bandwidth / 1e9, cg_bytes / 1e6,
       pcg_bytes / 1e6, mg_bytes / 1e6, levels.levels(), coarse_blocks, cg_flops / 1e6, mg_flops / 1e6);
@@ -599,23 +639,29 @@ int main() {
                     "bound (memory) [ms]", "bound (working set) [ms]", "GFLOP/s"});
   for (const auto& [name, s, bytes, flops] :
        {std::tuple<const char*, const StepSplit&, double, double>{"filtered PCG", pcg, pcg_bytes, cg_flops},
-        {"Eigen CG", cg, cg_bytes, cg_flops}, {"multigrid PCG", mg, mg_bytes, mg_flops}}) {
+        {"Eigen CG", cg, cg_bytes, cg_flops},
+        {"multigrid PCG", mg, mg_bytes, mg_flops}}) {
     const double per_iteration = (s.solve - s.setup) / std::max(s.iterations, 1);
     bound.add_row({name, kit::fixed(1e3 * per_iteration, 3), kit::fixed(bytes / per_iteration / 1e9, 1),
-                   kit::fixed(bytes / per_iteration / bandwidth, 2), kit::fixed(bytes / per_iteration / in_cache, 2),
-                   kit::fixed(1e3 * bytes / bandwidth, 3), kit::fixed(1e3 * bytes / in_cache, 3),
-                   kit::fixed(flops / per_iteration / 1e9, 2)});
+                   kit::fixed(bytes / per_iteration / bandwidth, 2),
+                   kit::fixed(bytes / per_iteration / in_cache, 2), kit::fixed(1e3 * bytes / bandwidth, 3),
+                   kit::fixed(1e3 * bytes / in_cache, 3), kit::fixed(flops / per_iteration / 1e9, 2)});
   }
   bound.print(std::cout);
-  fmt::print(
-      "   bound: the time one iteration's bytes take at that bandwidth; the multigrid's ms / iteration leaves\n"
-      "   its set-up out. Diagonal CG: at {:.0f} iterations a step its solve takes at least {:.1f} ms if A streams\n"
-      "   from memory, {:.1f} ms at the bandwidth of a cache that holds it, far above a {} ms step whatever the\n"
-      "   speed of one iteration. The multigrid PCG moves {:.1f}x the bytes of a CG iteration but needs {} of\n"
-      "   them: at least {:.1f} ms from memory, {:.1f} ms from cache, {:.1f} ms measured, plus {:.1f} ms of set-up.\n",
-      double(cg.iterations), 1e3 * cg.iterations * cg_bytes / bandwidth, 1e3 * cg.iterations * cg_bytes / in_cache,
-      target_ms, mg_bytes / cg_bytes, mg.iterations, 1e3 * mg.iterations * mg_bytes / bandwidth,
-      1e3 * mg.iterations * mg_bytes / in_cache, 1e3 * (mg.solve - mg.setup), 1e3 * mg.setup);
+  fmt::print("   bound: the time one iteration's bytes take at that bandwidth; the multigrid's ms / "
+             "iteration leaves\n"
+             "   its set-up out. Diagonal CG: at {:.0f} iterations a step its solve takes at least {:.1f} ms "
+             "if A streams\n"
+             "   from memory, {:.1f} ms at the bandwidth of a cache that holds it, far above a {} ms step "
+             "whatever the\n"
+             "   speed of one iteration. The multigrid PCG moves {:.1f}x the bytes of a CG iteration but "
+             "needs {} of\n"
+             "   them: at least {:.1f} ms from memory, {:.1f} ms from cache, {:.1f} ms measured, plus {:.1f} "
+             "ms of set-up.\n",
+             double(cg.iterations), 1e3 * cg.iterations * cg_bytes / bandwidth,
+             1e3 * cg.iterations * cg_bytes / in_cache, target_ms, mg_bytes / cg_bytes, mg.iterations,
+             1e3 * mg.iterations * mg_bytes / bandwidth, 1e3 * mg.iterations * mg_bytes / in_cache,
+             1e3 * (mg.solve - mg.setup), 1e3 * mg.setup);
   fmt::print("\nThe whole benchmark: {:.0f} s.\n", total.seconds());
   return 0;
 }

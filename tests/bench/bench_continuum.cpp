@@ -29,10 +29,10 @@
 
 #include <unistd.h>
 
+#include <fmt/format.h>
 #include <Eigen/Geometry>
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
-#include <fmt/format.h>
 
 #include <kit/app/table.hpp>
 #include <kit/base/stopwatch.hpp>
@@ -59,8 +59,8 @@ volatile double sink = 0;
 // Fastest sample of each of several pieces of work [CPU s per call], the pieces sampled in turn
 // so that a busy spell of the machine slows them alike; each sample repeats its piece for at
 // least `min_seconds`. `slowest`, when given, receives each piece's slowest sample: the noise.
-std::vector<double> in_turn(const std::vector<std::function<void()>>& runs, int samples = 5, double min_seconds = 0.1,
-                            std::vector<double>* slowest = nullptr) {
+std::vector<double> in_turn(const std::vector<std::function<void()>>& runs, int samples = 5,
+                            double min_seconds = 0.1, std::vector<double>* slowest = nullptr) {
   std::vector<double> best(runs.size(), INFINITY), worst(runs.size(), 0.0);
   for (int i = 0; i < samples; ++i)
     for (std::size_t k = 0; k < runs.size(); ++k) {
@@ -78,9 +78,9 @@ std::vector<double> in_turn(const std::vector<std::function<void()>>& runs, int 
 }
 
 constexpr std::array<int, 2> cells = {71, 224};  // per side of the sheet: 2 n² = 10082 and 100352 triangles
-constexpr double stretch = 1.01;                  // along the rest x axis
-constexpr double turn = 0.3;                      // [rad], about (1, 1, 1)/√3: F has no zero entry
-const kit::FemMaterial material{};  // chapter 9's: E = 1 GPa, ν = 0.3, 1000 kg/m³, 1 cm thick
+constexpr double stretch = 1.01;                 // along the rest x axis
+constexpr double turn = 0.3;                     // [rad], about (1, 1, 1)/√3: F has no zero entry
+const kit::FemMaterial material{};               // chapter 9's: E = 1 GPa, ν = 0.3, 1000 kg/m³, 1 cm thick
 
 // The chapter's wiring (ex 9.1 to 9.3, ex 6.1, ex 7.1, ex 7.3), here on the reference solutions.
 kit::ContinuumKernels continuum_kernels() {
@@ -89,7 +89,8 @@ kit::ContinuumKernels continuum_kernels() {
 
 // The unit sheet in `n` × `n` cells (alternating diagonals), as `model`, stretched and turned.
 kit::FemBody deformed_sheet(int n, kit::FemModel model) {
-  kit::FemBody body(kit::continuum_mesh(1, 1, n, n, kit::MeshKind::regular), material, model, continuum_kernels());
+  kit::FemBody body(kit::continuum_mesh(1, 1, n, n, kit::MeshKind::regular), material, model,
+                    continuum_kernels());
   const Eigen::Matrix3d R = Eigen::AngleAxisd(turn, Eigen::Vector3d::Ones().normalized()).toRotationMatrix();
   for (long i = 0; i < body.nodes(); ++i) {
     const Eigen::Vector2d& X = body.mesh().nodes[std::size_t(i)];
@@ -106,20 +107,22 @@ std::vector<kit::RestTriangle> rest_shapes(const kit::FemBody& body) {
   std::vector<kit::RestTriangle> rest;
   rest.reserve(body.mesh().triangles.size());
   for (const auto& t : body.mesh().triangles)
-    rest.push_back(kit::rest_triangle(body.mesh().nodes[std::size_t(t[0])], body.mesh().nodes[std::size_t(t[1])],
+    rest.push_back(kit::rest_triangle(body.mesh().nodes[std::size_t(t[0])],
+                                      body.mesh().nodes[std::size_t(t[1])],
                                       body.mesh().nodes[std::size_t(t[2])], body.material().thickness));
   return rest;
 }
 
 // FemBody::forces of the StVK model with ex 9.1 and 9.2 called directly, so that the compiler
 // may inline them: the same arithmetic, no function pointer.
-void direct_forces(const kit::FemBody& body, const std::vector<kit::RestTriangle>& rest, kit::NodeArray& out) {
+void direct_forces(const kit::FemBody& body, const std::vector<kit::RestTriangle>& rest,
+                   kit::NodeArray& out) {
   out = body.loads;
   const auto& triangles = body.mesh().triangles;
   for (std::size_t e = 0; e < triangles.size(); ++e) {
     const auto& t = triangles[e];
-    const kit::Matrix32 F = kit::deformation_gradient(node(body.x, t[0]), node(body.x, t[1]), node(body.x, t[2]),
-                                                      rest[e].inverse);
+    const kit::Matrix32 F = kit::deformation_gradient(node(body.x, t[0]), node(body.x, t[1]),
+                                                      node(body.x, t[2]), rest[e].inverse);
     const kit::ElementForces f = kit::stvk_forces(F, rest[e].inverse, rest[e].volume, body.lame());
     for (int k = 0; k < 3; ++k) out.row(t[k]) += f.col(k).transpose();
   }
@@ -167,25 +170,28 @@ double max_abs(const kit::NodeArray& a) { return a.cwiseAbs().maxCoeff(); }
 
 // One element's 9×9 K as 81 triplets, block by block (node a's rows, node b's columns), row-major
 // within a block: the order FemBody::stiffness filled its list in before it found its pattern once.
-void add_triplets(std::vector<Eigen::Triplet<double>>& entries, const std::array<int, 3>& tri, const kit::Matrix9& K) {
+void add_triplets(std::vector<Eigen::Triplet<double>>& entries, const std::array<int, 3>& tri,
+                  const kit::Matrix9& K) {
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b)
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)
-          entries.emplace_back(3 * tri[std::size_t(a)] + r, 3 * tri[std::size_t(b)] + c, K(3 * a + r, 3 * b + c));
+          entries.emplace_back(3 * tri[std::size_t(a)] + r, 3 * tri[std::size_t(b)] + c,
+                               K(3 * a + r, 3 * b + c));
 }
 
 // The baseline: the StVK stiffness assembled the straightforward way, as FemBody::stiffness did
 // before: the element kernel through FemKernels, a fresh triplet list, Eigen's setFromTriplets.
-void triplet_stiffness(const kit::FemBody& body, const std::vector<kit::RestTriangle>& rest, kit::SparseMatrix& out) {
+void triplet_stiffness(const kit::FemBody& body, const std::vector<kit::RestTriangle>& rest,
+                       kit::SparseMatrix& out) {
   const kit::FemKernels& kernels = body.kernels().element;
   const auto& triangles = body.mesh().triangles;
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(81 * triangles.size());
   for (std::size_t e = 0; e < triangles.size(); ++e) {
     const auto& t = triangles[e];
-    const kit::Matrix32 F = kernels.deformation_gradient(node(body.x, t[0]), node(body.x, t[1]), node(body.x, t[2]),
-                                                         rest[e].inverse);
+    const kit::Matrix32 F = kernels.deformation_gradient(node(body.x, t[0]), node(body.x, t[1]),
+                                                         node(body.x, t[2]), rest[e].inverse);
     add_triplets(entries, t, kernels.stiffness(F, rest[e].inverse, rest[e].volume, body.lame()));
   }
   out.resize(3 * body.nodes(), 3 * body.nodes());
@@ -260,15 +266,17 @@ int main() {
   const kit::Lame lame = kit::plane_stress_lame(material.young, material.poisson);
   fmt::print(
       "The sheet: 1 m x 1 m in n x n cells, alternating diagonals (continuum_mesh), E = {:.0e} Pa, nu = {},\n"
-      "plane-stress Lame lambda = {:.3e} Pa, mu = {:.3e} Pa; stretched by {} along x and turned by {} rad about\n"
+      "plane-stress Lame lambda = {:.3e} Pa, mu = {:.3e} Pa; stretched by {} along x and turned by {} rad "
+      "about\n"
       "(1, 1, 1)/sqrt(3), at rest (v = 0, no loads), so F != I in every element.\n\n",
       material.young, material.poisson, lame.lambda, lame.mu, stretch, turn);
 
   // --- 1: forces ----------------------------------------------------------------------------------
-  fmt::print(
-      "1. Nodal forces (FemBody::forces), ns per element (springs: per spring too). floor: the bytes counted\n"
-      "   in bench_continuum.cpp (element data once, each node once) at the triad's bandwidth from memory, and\n"
-      "   at that of a triad over the loop's own working set (the cache it runs from).\n");
+  fmt::print("1. Nodal forces (FemBody::forces), ns per element (springs: per spring too). floor: the bytes "
+             "counted\n"
+             "   in bench_continuum.cpp (element data once, each node once) at the triad's bandwidth from "
+             "memory, and\n"
+             "   at that of a triad over the loop's own working set (the cache it runs from).\n");
   kit::Table forces({"n", "elements", "model", "loop", "ns / element", "ns / spring", "B / element",
                      "floor, memory", "floor, working set", "x hand-written"});
   std::vector<std::string> checks;
@@ -303,33 +311,41 @@ int main() {
     row("StVK", "ex 9.1, 9.2 called directly", t[1], element_bytes, element_cache, false);
     row("StVK", "hand-written, scalars", t[2], element_bytes, element_cache, false);
     row("linear", "FemBody::forces", t[3], element_bytes, element_cache, false);
-    row("springs", fmt::format("FemBody::forces, {} springs", springs.springs().size()).c_str(), t[4], spring_bytes,
-        spring_cache, true);
+    row("springs", fmt::format("FemBody::forces, {} springs", springs.springs().size()).c_str(), t[4],
+        spring_bytes, spring_cache, true);
   }
   forces.print(std::cout);
   fmt::print(
       "   Checked first, the same forces, max |f - f_FemBody| / max |f_FemBody|:\n   {}.\n"
-      "   x hand-written: the time over the hand-written StVK loop's. The linear model also computes F (ex 9.1\n"
-      "   through its pointer) and calls linear_forces out of line; the springs model calls ex 6.1 per spring,\n"
+      "   x hand-written: the time over the hand-written StVK loop's. The linear model also computes F (ex "
+      "9.1\n"
+      "   through its pointer) and calls linear_forces out of line; the springs model calls ex 6.1 per "
+      "spring,\n"
       "   about 1.5 springs an element (one per mesh edge).\n"
-      "   Every loop takes several times both floors: compute-bound. The function pointers cost {:.0f} % and\n"
-      "   {:.0f} % (FemBody's loop over the same loop calling ex 9.1 and 9.2 directly); the rest of the gap to the\n"
-      "   hand-written loop is in the kernels' Eigen code as GCC compiles it, inlined or not (fixed-size 3x2\n"
+      "   Every loop takes several times both floors: compute-bound. The function pointers cost {:.0f} % "
+      "and\n"
+      "   {:.0f} % (FemBody's loop over the same loop calling ex 9.1 and 9.2 directly); the rest of the gap "
+      "to the\n"
+      "   hand-written loop is in the kernels' Eigen code as GCC compiles it, inlined or not (fixed-size "
+      "3x2\n"
       "   and 2x2 products and their temporaries). The hand-written loop does {} flops an element (counted\n"
-      "   at hand_forces): {:.1f} and {:.1f} GFLOP/s, scalar arithmetic (the build targets baseline x86-64).\n\n",
+      "   at hand_forces): {:.1f} and {:.1f} GFLOP/s, scalar arithmetic (the build targets baseline "
+      "x86-64).\n\n",
       fmt::format("{};\n   {}", checks[0], checks[1]), 100 * (stvk_times[0][0] / stvk_times[0][1] - 1),
       100 * (stvk_times[1][0] / stvk_times[1][1] - 1), hand_flops, hand_flops / stvk_times[0][2] / 1e9,
       hand_flops / stvk_times[1][2] / 1e9);
 
   // --- 2: stiffness -------------------------------------------------------------------------------
   fmt::print(
-      "2. Stiffness dF/dx (FemBody::stiffness: each element's 9x9 scattered into the sparsity pattern the body\n"
-      "   found once), ns per element, split into the element kernel alone (F and the 9x9 K of ex 9.1 and 9.3\n"
+      "2. Stiffness dF/dx (FemBody::stiffness: each element's 9x9 scattered into the sparsity pattern the "
+      "body\n"
+      "   found once), ns per element, split into the element kernel alone (F and the 9x9 K of ex 9.1 and "
+      "9.3\n"
       "   through FemKernels, summed into a dummy) and the sparse assembly around it; against the baseline\n"
       "   written here, the straightforward assembly (what FemBody::stiffness did before): the same kernel,\n"
       "   81 triplets an element into a fresh list, then Eigen's setFromTriplets.\n");
-  kit::Table stiffness({"n", "elements", "stored / element", "what", "ns / element", "x kernel", "B / element",
-                        "floor, memory", "floor, working set"});
+  kit::Table stiffness({"n", "elements", "stored / element", "what", "ns / element", "x kernel",
+                        "B / element", "floor, memory", "floor, working set"});
   checks.clear();
   std::vector<double> list_seconds;  // the triplet list alone, per element [s]
   std::vector<double> ratios;        // the baseline over FemBody::stiffness
@@ -343,8 +359,9 @@ int main() {
     stvk.stiffness(K_body);
     triplet_stiffness(stvk, rest, K_baseline);
     const kit::SparseMatrix difference = K_body - K_baseline;
-    checks.push_back(fmt::format("n = {}: {} and {} stored entries, ||K - K_triplets||_F / ||K_triplets||_F = {:.1e}",
-                                 n, K_body.nonZeros(), K_baseline.nonZeros(), difference.norm() / K_baseline.norm()));
+    checks.push_back(
+        fmt::format("n = {}: {} and {} stored entries, ||K - K_triplets||_F / ||K_triplets||_F = {:.1e}", n,
+                    K_body.nonZeros(), K_baseline.nonZeros(), difference.norm() / K_baseline.norm()));
     const kit::FemKernels& pointers = stvk.kernels().element;
     kit::Matrix9 dummy = kit::Matrix9::Zero();
     const auto kernel = [&] {
@@ -410,9 +427,10 @@ int main() {
     const double list_cache = triad_at(list_bytes);
     const auto row = [&](const std::string& what, double seconds, double per, double stored_per, double bytes,
                          double cache) {
-      stiffness.add_row({std::to_string(n), std::to_string(stvk.elements()), kit::fixed(stored_per, 1), what,
-                         ns(seconds / per), kit::fixed(seconds / t[1], 2), bytes > 0 ? kit::fixed(bytes / per, 0) : "",
-                         bytes > 0 ? ns(bytes / bandwidth / per) : "", bytes > 0 ? ns(bytes / cache / per) : ""});
+      stiffness.add_row(
+          {std::to_string(n), std::to_string(stvk.elements()), kit::fixed(stored_per, 1), what,
+           ns(seconds / per), kit::fixed(seconds / t[1], 2), bytes > 0 ? kit::fixed(bytes / per, 0) : "",
+           bytes > 0 ? ns(bytes / bandwidth / per) : "", bytes > 0 ? ns(bytes / cache / per) : ""});
     };
     row("StVK, FemBody::stiffness (scatter into a pattern found once)", t[0], E, stored / E, scatter_bytes,
         scatter_cache);
@@ -420,12 +438,14 @@ int main() {
     row("  element kernel, called directly", t[2], E, stored / E, element_bytes, kernel_cache);
     row("  assembly: the rest", t[0] - t[1], E, stored / E, scatter_bytes - element_bytes, scatter_cache);
     row("linear, FemBody::stiffness", t[3], E, double(K_linear.nonZeros()) / E, 0, 0);
-    row(fmt::format("springs, FemBody::stiffness (per spring: {} ns)", kit::fixed(1e9 * t[4] / S, 1)), t[4], E,
-        double(K_springs.nonZeros()) / E, 0, 0);
-    row("baseline: kernel + fresh triplets + setFromTriplets", t[5], E, stored / E, triplet_bytes, triplet_cache);
+    row(fmt::format("springs, FemBody::stiffness (per spring: {} ns)", kit::fixed(1e9 * t[4] / S, 1)), t[4],
+        E, double(K_springs.nonZeros()) / E, 0, 0);
+    row("baseline: kernel + fresh triplets + setFromTriplets", t[5], E, stored / E, triplet_bytes,
+        triplet_cache);
     row("  assembly: the rest", t[5] - t[1], E, stored / E, triplet_bytes - element_bytes, triplet_cache);
     row("    the triplet list alone", t[6], E, stored / E, list_bytes, list_cache);
-    row("    setFromTriplets alone", t[7], E, stored / E, triplet_bytes - element_bytes - list_bytes, triplet_cache);
+    row("    setFromTriplets alone", t[7], E, stored / E, triplet_bytes - element_bytes - list_bytes,
+        triplet_cache);
   }
   stiffness.print(std::cout);
   fmt::print(
@@ -434,13 +454,16 @@ int main() {
       "   x kernel: the time over the element kernel's through pointers. 'the rest': the first row of its\n"
       "   group less the kernel (pointers): FemBody::stiffness's check that the matrix holds its pattern\n"
       "   already (both index arrays compared), the values zeroed, and 81 indexed additions an element (27\n"
-      "   slots: a block's row is three adjacent values); the baseline's triplet vector (allocated anew every\n"
+      "   slots: a block's row is three adjacent values); the baseline's triplet vector (allocated anew "
+      "every\n"
       "   call, 81 x 16 B an element) and Eigen's setFromTriplets (a count, a transposed copy, duplicates\n"
       "   summed, a transposed copy back), each also timed alone. The list alone: {:.0f} ns an element at\n"
       "   n = {} ({:.0f} MB, which the allocator reuses from call to call), {:.0f} ns at n = {} ({:.0f} MB:\n"
-      "   above glibc's largest mmap threshold, 32 MB, each call maps it anew, the system faults in and zeroes\n"
+      "   above glibc's largest mmap threshold, 32 MB, each call maps it anew, the system faults in and "
+      "zeroes\n"
       "   every page, and unmaps it).\n"
-      "   B / element: bytes counted in bench_continuum.cpp (scatter_stiffness_bytes for FemBody::stiffness,\n"
+      "   B / element: bytes counted in bench_continuum.cpp (scatter_stiffness_bytes for "
+      "FemBody::stiffness,\n"
       "   triplet_stiffness_bytes for the baseline).\n\n",
       checks[0], checks[1], ratios[0], cells[0], ratios[1], cells[1], 1e9 * list_seconds[0], cells[0],
       81 * 16 * 2.0 * cells[0] * cells[0] / 1e6, 1e9 * list_seconds[1], cells[1],
@@ -450,14 +473,14 @@ int main() {
   // Chapter 9's spinning plate (spin_plate): 0.5 m, held in its plane, spinning at pi rad/s about its
   // centre, StVK, h = 1 ms (the chapter's implicit step), solved to implicit_step's default 1e-8.
   constexpr int plate_cells = 71;
-  constexpr double h = 1e-3;           // [s]
-  constexpr double tolerance = 1e-8;   // relative residual, ‖r‖ ≤ tol ‖S b‖, both CGs
+  constexpr double h = 1e-3;          // [s]
+  constexpr double tolerance = 1e-8;  // relative residual, ‖r‖ ≤ tol ‖S b‖, both CGs
   constexpr int max_iterations = 20000;
-  constexpr int warm_steps = 10;       // steps from rest before the timed state: the plate under way
-  constexpr int samples = 7;           // of each piece: a solve takes two calls of ~0.1 s a sample
-  kit::FemBody plate(kit::continuum_mesh(kit::plate_side, kit::plate_side, plate_cells, plate_cells,
-                                         kit::MeshKind::regular),
-                     material, kit::FemModel::stvk, continuum_kernels());
+  constexpr int warm_steps = 10;  // steps from rest before the timed state: the plate under way
+  constexpr int samples = 7;      // of each piece: a solve takes two calls of ~0.1 s a sample
+  kit::FemBody plate(
+      kit::continuum_mesh(kit::plate_side, kit::plate_side, plate_cells, plate_cells, kit::MeshKind::regular),
+      material, kit::FemModel::stvk, continuum_kernels());
   plate.hold_in_plane();
   for (long i = 0; i < plate.nodes(); ++i) {
     const double rx = plate.x(i, 0) - kit::plate_side / 2, ry = plate.x(i, 1) - kit::plate_side / 2;
@@ -497,7 +520,10 @@ int main() {
   cg.setTolerance(tolerance);
   cg.setMaxIterations(max_iterations);
   Eigen::VectorXd dv_cg, dv_ldlt;
-  const auto cg_solve = [&] { cg.compute(A); dv_cg = cg.solve(b); };
+  const auto cg_solve = [&] {
+    cg.compute(A);
+    dv_cg = cg.solve(b);
+  };
   // LDLᵀ reads a column-major lower triangle: the row-major arrays of the symmetric A are those of
   // its transpose, A itself, column-major, so a map serves without a copy (made anew at each use:
   // build_system reallocates A). The ordering and the symbolic factorisation depend only on the
@@ -510,8 +536,14 @@ int main() {
   const CpuClock analyse_clock;
   ldlt.analyzePattern(columns());
   const double analyse = analyse_clock.seconds();
-  const auto ldlt_solve = [&] { ldlt.factorize(columns()); dv_ldlt = ldlt.solve(b); };
-  const auto whole = [&] { restore(); kit::implicit_step(plate, h, 0, tolerance, max_iterations); };
+  const auto ldlt_solve = [&] {
+    ldlt.factorize(columns());
+    dv_ldlt = ldlt.solve(b);
+  };
+  const auto whole = [&] {
+    restore();
+    kit::implicit_step(plate, h, 0, tolerance, max_iterations);
+  };
   pcg_solve(), cg_solve(), ldlt_solve();
   if (ldlt.info() != Eigen::Success) {
     fmt::print(stderr, "bench: SimplicialLDLT failed on the plate's A\n");
@@ -525,27 +557,30 @@ int main() {
   const double step_difference = max_abs(plate.v - v_pieces);
   restore();
   std::vector<double> slowest;
-  const std::vector<double> t = in_turn({assemble_stiffness, build_system, pcg_solve, cg_solve, ldlt_solve, whole,
-                                         restore},
-                                        samples, 0.1, &slowest);
+  const std::vector<double> t =
+      in_turn({assemble_stiffness, build_system, pcg_solve, cg_solve, ldlt_solve, whole, restore}, samples,
+              0.1, &slowest);
   restore();
   const double whole_step = t[5] - t[6];
   const double rest_of_step = whole_step - t[0] - t[1] - t[2];
   const double rows = double(A.rows()), stored = double(A.nonZeros());
   const double elements = double(plate.elements());
-  fmt::print(
-      "3. One implicit step (implicit_step, Baraff & Witkin's (M - h^2 K) dv = h (f + h K v)) of chapter 9's\n"
-      "   spinning plate: {} m in {} x {} cells ({} elements, {} nodes), StVK, held in its plane, spinning at\n"
-      "   pi rad/s, h = {} s, after {} steps from rest; A has {:.0f} rows and {:.0f} stored entries ({:.1f} a row).\n"
-      "   Solves to {:.0e} relative residual. Each piece timed alone on the same state, fastest of {} samples.\n",
-      kit::plate_side, plate_cells, plate_cells, plate.elements(), plate.nodes(), h, warm_steps, rows, stored,
-      stored / rows, tolerance, samples);
-  kit::Table step({"piece", "ms", "slowest sample", "ns / element", "of the step", "iterations", "ms / iteration",
-                   "solve / filtered PCG"});
+  fmt::print("3. One implicit step (implicit_step, Baraff & Witkin's (M - h^2 K) dv = h (f + h K v)) of "
+             "chapter 9's\n"
+             "   spinning plate: {} m in {} x {} cells ({} elements, {} nodes), StVK, held in its plane, "
+             "spinning at\n"
+             "   pi rad/s, h = {} s, after {} steps from rest; A has {:.0f} rows and {:.0f} stored entries "
+             "({:.1f} a row).\n"
+             "   Solves to {:.0e} relative residual. Each piece timed alone on the same state, fastest of {} "
+             "samples.\n",
+             kit::plate_side, plate_cells, plate_cells, plate.elements(), plate.nodes(), h, warm_steps, rows,
+             stored, stored / rows, tolerance, samples);
+  kit::Table step({"piece", "ms", "slowest sample", "ns / element", "of the step", "iterations",
+                   "ms / iteration", "solve / filtered PCG"});
   const auto piece = [&](const std::string& name, double seconds, double slow, int iterations, bool solve) {
     step.add_row({name, kit::fixed(1e3 * seconds, 3), slow > 0 ? kit::fixed(1e3 * slow, 3) : "",
-                  kit::fixed(1e9 * seconds / elements, 0),
-                  kit::fixed(100 * seconds / whole_step, 1) + " %", iterations > 0 ? std::to_string(iterations) : "",
+                  kit::fixed(1e9 * seconds / elements, 0), kit::fixed(100 * seconds / whole_step, 1) + " %",
+                  iterations > 0 ? std::to_string(iterations) : "",
                   iterations > 0 ? kit::fixed(1e3 * seconds / iterations, 4) : "",
                   solve ? kit::fixed(seconds / t[2], 2) : ""});
   };
@@ -557,9 +592,10 @@ int main() {
   piece("peer: Eigen CG, diagonal preconditioner", t[3], slowest[3], int(cg.iterations()), true);
   piece("peer: Eigen SimplicialLDLT, factorise + solve", t[4], slowest[4], 0, true);
   step.print(std::cout);
-  fmt::print(
-      "   rest: the whole step (less the copy that restores the state before each) less the three pieces, each\n"
-      "   piece's fastest sample; within the noise (the slowest samples) it may come out near zero or below.\n");
+  fmt::print("   rest: the whole step (less the copy that restores the state before each) less the three "
+             "pieces, each\n"
+             "   piece's fastest sample; within the noise (the slowest samples) it may come out near zero or "
+             "below.\n");
   // One CG iteration reads A once (8 B a value, 4 B a column index, 4 B a row start) and at least
   // the vectors of the algorithm: q = A c (c read, q written), cᵀq, x += α c, r −= α q, s = P⁻¹ r,
   // rᵀs, c = s + β c: 12 reads and 5 writes of 8 B a row, a write with its read for ownership, 22
@@ -567,18 +603,23 @@ int main() {
   const double cg_bytes = 12 * stored + 4 * (rows + 1) + 22 * 8 * rows;
   const double pcg_bytes = cg_bytes + 48 * rows;
   const double solve_cache = triad_at(12 * stored + 8 * 8 * rows);  // A and eight vectors
-  fmt::print(
-      "   Eigen's SimplicialLDLT: the ordering (AMD) and symbolic analysis, once for the mesh, {:.2f} ms more;\n"
-      "   its factor holds {} entries. The answers: the pieces give implicit_step's v to {:.1e} m/s; dv of Eigen's\n"
-      "   CG and of LDL^T differ from the PCG's by {:.1e} and {:.1e} of the largest |dv|. Eigen's iterations()\n"
-      "   counts one product less than the PCG's: it stops inside its last one.\n"
-      "   Bound on the solve: one PCG iteration moves at least {:.2f} MB (Eigen's CG {:.2f} MB, no filters):\n"
-      "   {:.3f} ms at the triad from memory, {:.3f} ms at that of a triad over A and eight vectors ({:.1f} GB/s);\n"
-      "   measured {:.3f} ms (PCG) and {:.3f} ms (Eigen CG) an iteration.\n",
-      1e3 * analyse, ldlt.matrixL().nestedExpression().nonZeros(), step_difference,
-      relative_difference(dv_cg, pcg.x), relative_difference(dv_ldlt, pcg.x), pcg_bytes / 1e6, cg_bytes / 1e6,
-      1e3 * pcg_bytes / bandwidth, 1e3 * pcg_bytes / solve_cache, solve_cache / 1e9,
-      1e3 * t[2] / std::max(pcg.iterations, 1), 1e3 * t[3] / std::max<double>(double(cg.iterations()), 1));
+  fmt::print("   Eigen's SimplicialLDLT: the ordering (AMD) and symbolic analysis, once for the mesh, {:.2f} "
+             "ms more;\n"
+             "   its factor holds {} entries. The answers: the pieces give implicit_step's v to {:.1e} m/s; "
+             "dv of Eigen's\n"
+             "   CG and of LDL^T differ from the PCG's by {:.1e} and {:.1e} of the largest |dv|. Eigen's "
+             "iterations()\n"
+             "   counts one product less than the PCG's: it stops inside its last one.\n"
+             "   Bound on the solve: one PCG iteration moves at least {:.2f} MB (Eigen's CG {:.2f} MB, no "
+             "filters):\n"
+             "   {:.3f} ms at the triad from memory, {:.3f} ms at that of a triad over A and eight vectors "
+             "({:.1f} GB/s);\n"
+             "   measured {:.3f} ms (PCG) and {:.3f} ms (Eigen CG) an iteration.\n",
+             1e3 * analyse, ldlt.matrixL().nestedExpression().nonZeros(), step_difference,
+             relative_difference(dv_cg, pcg.x), relative_difference(dv_ldlt, pcg.x), pcg_bytes / 1e6,
+             cg_bytes / 1e6, 1e3 * pcg_bytes / bandwidth, 1e3 * pcg_bytes / solve_cache, solve_cache / 1e9,
+             1e3 * t[2] / std::max(pcg.iterations, 1),
+             1e3 * t[3] / std::max<double>(double(cg.iterations()), 1));
   if (step_difference != 0) {
     fmt::print(stderr, "bench: the timed pieces do not give implicit_step's answer\n");
     return 1;

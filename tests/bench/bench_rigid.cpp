@@ -37,20 +37,20 @@
 #include <kit/rigid/rigid_integrators.hpp>
 #include <kit/rigid/rigid_stepper.hpp>
 
-#include "rigid_kernels.hpp"
 #include "cpu_clock.hpp"
+#include "rigid_kernels.hpp"
 
 namespace {
 using kit::bench::CpuClock, kit::bench::load_average;  // every time below is read from it
 
-constexpr double mass = 0.5;              // [kg], the T-handle of chapter 8
-const kit::Vec3 omega0(10, 0, 0.1);       // [rad/s], body frame = world frame at t = 0
-constexpr double h_bench = 1e-3;          // [s], part 1
-constexpr long bench_steps = 10000;       // steps of one part-1 sample: 10 s, from the start each time
-constexpr double h_game = 1.0 / 60;       // [s], a game's frame, Bullet's fixed step
-constexpr double t_end = 60;              // [s] simulated in parts 3 and 4
-constexpr double h_reference = 1e-4;      // [s], the midpoint's reference run for the flips
-constexpr double heavy = 100;             // the factor on M and I of the last Bullet variant
+constexpr double mass = 0.5;          // [kg], the T-handle of chapter 8
+const kit::Vec3 omega0(10, 0, 0.1);   // [rad/s], body frame = world frame at t = 0
+constexpr double h_bench = 1e-3;      // [s], part 1
+constexpr long bench_steps = 10000;   // steps of one part-1 sample: 10 s, from the start each time
+constexpr double h_game = 1.0 / 60;   // [s], a game's frame, Bullet's fixed step
+constexpr double t_end = 60;          // [s] simulated in parts 3 and 4
+constexpr double h_reference = 1e-4;  // [s], the midpoint's reference run for the flips
+constexpr double heavy = 100;         // the factor on M and I of the last Bullet variant
 // Samples per timing: a busy machine only ever slows a sample, so the fastest is kept.
 constexpr int samples = 9;
 
@@ -67,13 +67,13 @@ std::string ratio_text(double kit, double peer) {
 
 // --- what a run is measured by -------------------------------------------------------------------
 struct Drift {
-  double energy = 0;      // max |E − E0|/E0 over the run
-  double energy_end = 0;  // (E − E0)/E0 at the end: its sign says gained or lost
-  double momentum = 0;    // max ||L| − |L0||/|L0|, L in the world frame
-  double direction = 0;   // max |L − L0|/|L0|: L's drift as a vector (its turning too)
-  double frame = 0;       // max ‖RᵀR − 1‖: how far R left the rotations
-  int flips = 0;          // reversals of ω_body along the intermediate axis
-  double last_flip = -1;  // [s], the time of the last one; −1: none
+  double energy = 0;        // max |E − E0|/E0 over the run
+  double energy_end = 0;    // (E − E0)/E0 at the end: its sign says gained or lost
+  double momentum = 0;      // max ||L| − |L0||/|L0|, L in the world frame
+  double direction = 0;     // max |L − L0|/|L0|: L's drift as a vector (its turning too)
+  double frame = 0;         // max ‖RᵀR − 1‖: how far R left the rotations
+  int flips = 0;            // reversals of ω_body along the intermediate axis
+  double last_flip = -1;    // [s], the time of the last one; −1: none
   double diverged_at = -1;  // [s], the time E or L stopped being finite; −1: never
 };
 
@@ -82,7 +82,8 @@ struct Drift {
 // round-off near zero cannot count twice.
 class DriftMeter {
  public:
-  DriftMeter(double e0, const kit::Vec3& l0, double omega_start) : e0_(e0), l0_(l0), threshold_(0.5 * omega_start) {
+  DriftMeter(double e0, const kit::Vec3& l0, double omega_start)
+      : e0_(e0), l0_(l0), threshold_(0.5 * omega_start) {
     sign_ = omega_start > 0 ? 1 : -1;
   }
   // False once the run has diverged (then stop stepping).
@@ -125,7 +126,8 @@ struct Setup {
 
 Drift kit_run(const Setup& s, kit::RotationIntegrator integrator, double h) {
   kit::RigidState state = s.start;
-  DriftMeter meter(kit::kinetic_energy(s.shape, state), state.L, kit::body_angular_velocity(s.shape, state)[s.axis]);
+  DriftMeter meter(kit::kinetic_energy(s.shape, state), state.L,
+                   kit::body_angular_velocity(s.shape, state)[s.axis]);
   const long steps = steps_for(h);
   for (long k = 1; k <= steps; ++k) {
     kit::rotation_step(kernels, integrator, s.shape, state, h);
@@ -249,10 +251,10 @@ double bullet_cost(const Setup& s, const Variant& v, double h) {
 // Bullet's implicit gyroscopic step (computeGyroscopicImpulseImplicit_Body) at t = 0 against the
 // same single Newton step solved exactly in double, on the body with M and I times `scale`.
 struct ImplicitCheck {
-  double det = 0;         // det J as solve33 computes it (float) [kg³·m⁶]
-  double bullet = 0;      // |Δω| Bullet returns [rad/s]
-  double exact = 0;       // |Δω| of the exact solve [rad/s]
-  double solve33 = 0;     // |J.solve33(f)| / |J⁻¹ f|: 1 for a correct solve
+  double det = 0;      // det J as solve33 computes it (float) [kg³·m⁶]
+  double bullet = 0;   // |Δω| Bullet returns [rad/s]
+  double exact = 0;    // |Δω| of the exact solve [rad/s]
+  double solve33 = 0;  // |J.solve33(f)| / |J⁻¹ f|: 1 for a correct solve
 };
 
 kit::Mat3 skew(const kit::Vec3& w) {
@@ -304,8 +306,7 @@ std::string flips_text(const Drift& d, int expected) { return fmt::format("{} / 
 
 // One row of the drift tables: NaN-aware.
 std::vector<std::string> drift_cells(const Drift& d) {
-  if (d.diverged_at >= 0)
-    return {fmt::format("NaN at {:.2f} s", d.diverged_at), "NaN", "NaN", "NaN", "NaN"};
+  if (d.diverged_at >= 0) return {fmt::format("NaN at {:.2f} s", d.diverged_at), "NaN", "NaN", "NaN", "NaN"};
   return {kit::sci(d.energy, 2), fmt::format("{:+.2e}", d.energy_end), kit::sci(d.momentum, 2),
           kit::sci(d.direction, 2), kit::sci(d.frame, 2)};
 }
@@ -320,7 +321,8 @@ int main() {
   // The body axes must be the principal ones: Bullet takes a diagonal inertia in the body frame.
   const double off_diagonal = (shape.inertia - kit::Mat3(diagonal.asDiagonal())).norm() / diagonal.norm();
   if (off_diagonal > 1e-12) {
-    fmt::print(stderr, "bench: the T-handle's inertia is not diagonal in its body axes ({:.1e})\n", off_diagonal);
+    fmt::print(stderr, "bench: the T-handle's inertia is not diagonal in its body axes ({:.1e})\n",
+               off_diagonal);
     return 1;
   }
   // The principal moments ascending, and ω0 in that order; the intermediate one's axis flips.
@@ -336,25 +338,30 @@ int main() {
   const int expected = period / 4 <= t_end ? int(std::floor((t_end - period / 4) / (period / 2))) + 1 : 0;
   const char axis_name = "xyz"[setup.axis];
 
-  fmt::print(
-      "Load average at the start: {:.2f} on {} cores. Times are this thread's CPU time, the fastest of {} samples.\n\n",
-      load_average(), sysconf(_SC_NPROCESSORS_ONLN), samples);
-  fmt::print(
-      "The body: the T-handle of chapter 8, M = {} kg, I_body = diag({:.4e}, {:.4e}, {:.4e}) kg.m^2 (principal:\n"
-      "off-diagonal {:.0e} of the diagonal), intermediate axis {}; omega0 = ({}, {}, {}) rad/s in the body frame,\n"
-      "= world at t = 0. No gravity, no contact: the torque-free body, E = {:.6g} J and |L| = {:.6g} kg.m^2/s\n"
-      "conserved. Closed form (Landau & Lifshitz §37): period {:.4f} s (k = {:.6f}), omega_{} reverses every half\n"
-      "period from T/4 = {:.4f} s: {} flips in {} s.\n\n",
-      shape.mass, diagonal.x(), diagonal.y(), diagonal.z(), off_diagonal, axis_name, omega0.x(), omega0.y(),
-      omega0.z(), motion.energy, motion.momentum, period, motion.modulus(), axis_name, period / 4, expected, t_end);
+  fmt::print("Load average at the start: {:.2f} on {} cores. Times are this thread's CPU time, the fastest "
+             "of {} samples.\n\n",
+             load_average(), sysconf(_SC_NPROCESSORS_ONLN), samples);
+  fmt::print("The body: the T-handle of chapter 8, M = {} kg, I_body = diag({:.4e}, {:.4e}, {:.4e}) kg.m^2 "
+             "(principal:\n"
+             "off-diagonal {:.0e} of the diagonal), intermediate axis {}; omega0 = ({}, {}, {}) rad/s in the "
+             "body frame,\n"
+             "= world at t = 0. No gravity, no contact: the torque-free body, E = {:.6g} J and |L| = {:.6g} "
+             "kg.m^2/s\n"
+             "conserved. Closed form (Landau & Lifshitz §37): period {:.4f} s (k = {:.6f}), omega_{} "
+             "reverses every half\n"
+             "period from T/4 = {:.4f} s: {} flips in {} s.\n\n",
+             shape.mass, diagonal.x(), diagonal.y(), diagonal.z(), off_diagonal, axis_name, omega0.x(),
+             omega0.y(), omega0.z(), motion.energy, motion.momentum, period, motion.modulus(), axis_name,
+             period / 4, expected, t_end);
 
   // --- 1 ------------------------------------------------------------------------------------------
   const auto& integrators = kit::rotation_integrators;
   std::vector<double> bench_ns;
   for (const auto integrator : integrators)
     bench_ns.push_back(1e9 * kit_cost(setup, integrator, h_bench, bench_steps));
-  const std::size_t midpoint = std::size_t(
-      std::find(integrators.begin(), integrators.end(), kit::RotationIntegrator::midpoint) - integrators.begin());
+  const std::size_t midpoint =
+      std::size_t(std::find(integrators.begin(), integrators.end(), kit::RotationIntegrator::midpoint) -
+                  integrators.begin());
   const double midpoint_ns = bench_ns[midpoint];
   fmt::print(
       "1. ns per body-step, free T-handle, h = {} ms, {} steps from the start per sample ({} s simulated),\n"
@@ -382,21 +389,25 @@ int main() {
       {fmt::format("Bullet default, M and I x{:.0f}", heavy), std::nullopt, heavy},
   };
   const int default_flags = BulletBody(shape, 1, std::nullopt, omega0).default_flags();
-  const ImplicitCheck as_given = implicit_check(setup, 1, h_game), scaled = implicit_check(setup, heavy, h_game);
-  fmt::print(
-      "2. Bullet {}.{:02d} ({}, btScalar of {} bytes): one btRigidBody in a btDiscreteDynamicsWorld, gravity 0,\n"
-      "   shape a compound of the two boxes, mass and principal inertia given, deactivation off;\n"
-      "   stepSimulation(1/60, 0).\n"
-      "   A new body's flags: {} ({}).\n",
-      btGetVersion() / 100, btGetVersion() % 100, sizeof(btScalar) == sizeof(float) ? "float" : "double",
-      sizeof(btScalar), default_flags, flags_name(default_flags));
+  const ImplicitCheck as_given = implicit_check(setup, 1, h_game),
+                      scaled = implicit_check(setup, heavy, h_game);
+  fmt::print("2. Bullet {}.{:02d} ({}, btScalar of {} bytes): one btRigidBody in a btDiscreteDynamicsWorld, "
+             "gravity 0,\n"
+             "   shape a compound of the two boxes, mass and principal inertia given, deactivation off;\n"
+             "   stepSimulation(1/60, 0).\n"
+             "   A new body's flags: {} ({}).\n",
+             btGetVersion() / 100, btGetVersion() % 100,
+             sizeof(btScalar) == sizeof(float) ? "float" : "double", sizeof(btScalar), default_flags,
+             flags_name(default_flags));
   fmt::print(
       "   The default's implicit gyroscopic step (computeGyroscopicImpulseImplicit_Body, one Newton step on\n"
-      "   I w+ + h w+ x I w+ = I w) solves J dw = f with btMatrix3x3::solve33 (Cramer's rule), which divides by\n"
-      "   det J only when |det J| > SIMD_EPSILON = {:.3e} and otherwise MULTIPLIES by it. At t = 0, h = 1/60 s:\n",
+      "   I w+ + h w+ x I w+ = I w) solves J dw = f with btMatrix3x3::solve33 (Cramer's rule), which divides "
+      "by\n"
+      "   det J only when |det J| > SIMD_EPSILON = {:.3e} and otherwise MULTIPLIES by it. At t = 0, h = 1/60 "
+      "s:\n",
       double(SIMD_EPSILON));
-  kit::Table check({"body", "det J [kg^3.m^6]", "> SIMD_EPSILON", "solve33 / exact solve", "|dw| Bullet [rad/s]",
-                    "|dw| exact [rad/s]"});
+  kit::Table check({"body", "det J [kg^3.m^6]", "> SIMD_EPSILON", "solve33 / exact solve",
+                    "|dw| Bullet [rad/s]", "|dw| exact [rad/s]"});
   for (const auto& [name, c] : {std::pair<std::string, const ImplicitCheck&>{"as given", as_given},
                                 {fmt::format("M and I x{:.0f}", heavy), scaled}})
     check.add_row({name, kit::sci(c.det, 3), std::abs(c.det) > double(SIMD_EPSILON) ? "yes" : "no",
@@ -406,12 +417,14 @@ int main() {
                        std::abs(scaled.det) > double(SIMD_EPSILON) && std::abs(scaled.solve33 - 1) < 1e-3;
   fmt::print(
       "   {}\n\n",
-      finding ? fmt::format("Holds: on the T-handle as given, solve33 returns det^2 = {:.1e} times the solution,\n"
-                            "   so the default's gyroscopic correction is ~0 and the body turns as if the option were\n"
-                            "   off; with M and I x{:.0f} (the same motion) det J = {:.2g} > SIMD_EPSILON and the\n"
-                            "   correction is the exact solve's.",
-                            as_given.det * as_given.det, heavy, scaled.det)
-              : std::string("Does NOT hold on this Bullet: see the table."));
+      finding
+          ? fmt::format(
+                "Holds: on the T-handle as given, solve33 returns det^2 = {:.1e} times the solution,\n"
+                "   so the default's gyroscopic correction is ~0 and the body turns as if the option were\n"
+                "   off; with M and I x{:.0f} (the same motion) det J = {:.2g} > SIMD_EPSILON and the\n"
+                "   correction is the exact solve's.",
+                as_given.det * as_given.det, heavy, scaled.det)
+          : std::string("Does NOT hold on this Bullet: see the table."));
 
   // --- 3 ------------------------------------------------------------------------------------------
   std::vector<Drift> bullet_drift;
@@ -428,13 +441,16 @@ int main() {
   }
   const Drift reference = kit_run(setup, kit::RotationIntegrator::midpoint, h_reference);
   fmt::print(
-      "3. h = 1/60 s, {} s ({} steps). Drifts are the largest over the run, relative to t = 0: E the kinetic\n"
+      "3. h = 1/60 s, {} s ({} steps). Drifts are the largest over the run, relative to t = 0: E the "
+      "kinetic\n"
       "   energy, |L| and L the angular momentum in the world frame (L's drift as a vector also counts its\n"
-      "   turning), R^T R - 1 (Frobenius). Flips: reversals of omega_{} in the body frame (counted at half its\n"
+      "   turning), R^T R - 1 (Frobenius). Flips: reversals of omega_{} in the body frame (counted at half "
+      "its\n"
       "   amplitude) / the closed form's count. (The implicit midpoint at h = {:.0e} s flips {} times.)\n",
       t_end, steps_for(h_game), axis_name, h_reference, reference.flips);
-  const std::vector<std::string> drift_headers{"method", "us / step", "max |dE|/E", "dE/E at 60 s", "max |d|L||/|L|",
-                                               "max |L - L0|/|L0|", "max |R^T R - 1|", "flips"};
+  const std::vector<std::string> drift_headers{"method",          "us / step",      "max |dE|/E",
+                                               "dE/E at 60 s",    "max |d|L||/|L|", "max |L - L0|/|L0|",
+                                               "max |R^T R - 1|", "flips"};
   kit::Table game(drift_headers);
   const auto add_drift_row = [&](kit::Table& table, const std::string& name, double us, const Drift& d) {
     std::vector<std::string> row{name, kit::fixed(us, 3)};
@@ -472,34 +488,41 @@ int main() {
     e.drift = kit_run(setup, integrators[i], e.h);
     equal.push_back(e);
   }
-  fmt::print(
-      "4. Equal cost: each integrator at h = (1/60 s) c_kit / c_Bullet (c: CPU per step), so that its CPU per\n"
-      "   simulated second is Bullet's default's at 1/60 s ({:.3f} us a step, {:.1f} us per simulated s), {} s.\n"
-      "   Ratios kit / Bullet (below 1: the kit drifts less for the same CPU), against Bullet's default on the\n"
-      "   T-handle as given and on the body x{:.0f} (the default doing what it is meant to).\n",
-      1e6 * c_bullet, 1e6 * c_bullet / h_game, t_end, heavy);
+  fmt::print("4. Equal cost: each integrator at h = (1/60 s) c_kit / c_Bullet (c: CPU per step), so that its "
+             "CPU per\n"
+             "   simulated second is Bullet's default's at 1/60 s ({:.3f} us a step, {:.1f} us per simulated "
+             "s), {} s.\n"
+             "   Ratios kit / Bullet (below 1: the kit drifts less for the same CPU), against Bullet's "
+             "default on the\n"
+             "   T-handle as given and on the body x{:.0f} (the default doing what it is meant to).\n",
+             1e6 * c_bullet, 1e6 * c_bullet / h_game, t_end, heavy);
   kit::Table cost({"integrator", "h [s]", "CPU kit / Bullet", "max |dE|/E", "/ default", "/ x100",
-                   "max |d|L||/|L|", "/ default", "/ x100", "max |L - L0|/|L0|", "/ default", "/ x100", "flips"});
+                   "max |d|L||/|L|", "/ default", "/ x100", "max |L - L0|/|L0|", "/ default", "/ x100",
+                   "flips"});
   for (std::size_t i = 0; i < integrators.size(); ++i) {
     const EqualCost& e = equal[i];
     const Drift& d = e.drift;
     const bool nan = d.diverged_at >= 0;
     const auto cell = [&](double value) { return nan ? std::string("NaN") : kit::sci(value, 2); };
-    const auto ratio = [&](double value, double peer) { return nan ? std::string("NaN") : ratio_text(value, peer); };
+    const auto ratio = [&](double value, double peer) {
+      return nan ? std::string("NaN") : ratio_text(value, peer);
+    };
     cost.add_row({kit::display_name(integrators[i]), kit::sci(e.h, 3),
                   kit::fixed((e.cost / e.h) / (c_bullet / h_game), 2),
                   nan ? fmt::format("NaN at {:.2f} s", d.diverged_at) : cell(d.energy),
-                  ratio(d.energy, bullet_default.energy), ratio(d.energy, bullet_heavy.energy), cell(d.momentum),
-                  ratio(d.momentum, bullet_default.momentum), ratio(d.momentum, bullet_heavy.momentum),
-                  cell(d.direction), ratio(d.direction, bullet_default.direction),
-                  ratio(d.direction, bullet_heavy.direction), flips_text(d, expected)});
+                  ratio(d.energy, bullet_default.energy), ratio(d.energy, bullet_heavy.energy),
+                  cell(d.momentum), ratio(d.momentum, bullet_default.momentum),
+                  ratio(d.momentum, bullet_heavy.momentum), cell(d.direction),
+                  ratio(d.direction, bullet_default.direction), ratio(d.direction, bullet_heavy.direction),
+                  flips_text(d, expected)});
   }
   cost.print(std::cout);
-  fmt::print("   Bullet at 1/60 s for reference: default {} / {} / {} (flips {}), x{:.0f} {} / {} / {} (flips {}).\n\n",
+  fmt::print("   Bullet at 1/60 s for reference: default {} / {} / {} (flips {}), x{:.0f} {} / {} / {} "
+             "(flips {}).\n\n",
              kit::sci(bullet_default.energy, 2), kit::sci(bullet_default.momentum, 2),
              kit::sci(bullet_default.direction, 2), flips_text(bullet_default, expected), heavy,
-             kit::sci(bullet_heavy.energy, 2), kit::sci(bullet_heavy.momentum, 2), kit::sci(bullet_heavy.direction, 2),
-             flips_text(bullet_heavy, expected));
+             kit::sci(bullet_heavy.energy, 2), kit::sci(bullet_heavy.momentum, 2),
+             kit::sci(bullet_heavy.direction, 2), flips_text(bullet_heavy, expected));
 
   // --- conclusions, from the numbers above ---------------------------------------------------------
   fmt::print("Conclusions (from this run's numbers)\n");
@@ -509,7 +532,8 @@ int main() {
     const double bullet_ns = 1e9 * c_bullet;
     fmt::print(
         " - Cost: the kit's integrators take {:.0f} ns ({}) to {:.0f} ns ({}) a body-step at h = 1 ms; one\n"
-        "   Bullet world step with its one body takes {:.0f} ns: {:.1f}x the cheapest, {:.1f}x the midpoint, {:.1f}x\n"
+        "   Bullet world step with its one body takes {:.0f} ns: {:.1f}x the cheapest, {:.1f}x the midpoint, "
+        "{:.1f}x\n"
         "   the dearest (a world step also runs the broadphase, the islands and the solver's set-up).\n",
         bench_ns[std::size_t(cheapest)], kit::flag_name(integrators[std::size_t(cheapest)]),
         bench_ns[std::size_t(dearest)], kit::flag_name(integrators[std::size_t(dearest)]), bullet_ns,
@@ -526,26 +550,28 @@ int main() {
     else if (d.flips == 0)
       verdict = "never flips: no Dzhanibekov effect";
     else
-      verdict = fmt::format("flips {} times where the closed form flips {}, the last at {:.1f} s", d.flips, expected,
-                            d.last_flip);
+      verdict = fmt::format("flips {} times where the closed form flips {}, the last at {:.1f} s", d.flips,
+                            expected, d.last_flip);
     std::string energy;
     if (d.energy_end > 1)
       energy = fmt::format("; E ends at {:.2g}x its start", 1 + d.energy_end);
     else if (std::abs(d.energy_end) > 1e-3)
-      energy = fmt::format("; E ends {:.1f}% {}", 100 * std::abs(d.energy_end), d.energy_end > 0 ? "up" : "down");
+      energy =
+          fmt::format("; E ends {:.1f}% {}", 100 * std::abs(d.energy_end), d.energy_end > 0 ? "up" : "down");
     fmt::print(" - {}: {}.\n   max |dE|/E {}, max |L - L0|/|L0| {}{}.\n", variants[i].name, verdict,
                kit::sci(d.energy, 2), kit::sci(d.direction, 2), energy);
   }
   if (const Drift& off = bullet_drift[0]; off.diverged_at < 0 && off.energy < 1e-4 && off.flips != expected)
-    fmt::print(
-        " - Without the gyroscopic term Bullet keeps E and |L| to {} and L within {} of L0, yet flips {} times\n"
-        "   of {}: small drifts alone do not make the motion right; the flips show it wrong.\n",
-        kit::sci(std::max(off.energy, off.momentum), 1), kit::sci(off.direction, 1), off.flips, expected);
+    fmt::print(" - Without the gyroscopic term Bullet keeps E and |L| to {} and L within {} of L0, yet flips "
+               "{} times\n"
+               "   of {}: small drifts alone do not make the motion right; the flips show it wrong.\n",
+               kit::sci(std::max(off.energy, off.momentum), 1), kit::sci(off.direction, 1), off.flips,
+               expected);
   if (finding)
-    fmt::print(
-        " - The default's implicit term is lost to solve33 on this body (det J = {:.1e} <= FLT_EPSILON): {} flips\n"
-        "   as given, {} with M and I x{:.0f}, the same motion.\n",
-        as_given.det, bullet_default.flips, bullet_heavy.flips, heavy);
+    fmt::print(" - The default's implicit term is lost to solve33 on this body (det J = {:.1e} <= "
+               "FLT_EPSILON): {} flips\n"
+               "   as given, {} with M and I x{:.0f}, the same motion.\n",
+               as_given.det, bullet_default.flips, bullet_heavy.flips, heavy);
   {
     // With L untouched (the lecture's steps and the midpoint keep the world L as it is), E is at
     // most |L|²/(2 I_min): a first-order step that gains energy ends up spinning about the
@@ -556,14 +582,16 @@ int main() {
       const Drift& d = kit_drift[i];
       if (d.diverged_at >= 0) continue;
       if (d.momentum == 0 && d.direction == 0) exact_l.push_back(kit::flag_name(integrators[i]));
-      if (std::abs(1 + d.energy_end - ceiling) < 1e-2 * ceiling) saturated.push_back(kit::flag_name(integrators[i]));
+      if (std::abs(1 + d.energy_end - ceiling) < 1e-2 * ceiling)
+        saturated.push_back(kit::flag_name(integrators[i]));
     }
-    fmt::print(
-        " - L stays exactly L0 (the world L is the state these steps leave alone; their errors show in E, R and\n"
-        "   the flips) in: {}.\n"
-        "   At h = 1/60 s E ends at |L|^2/(2 I_min) = {:.2f} E0, the most this |L| allows: the body spins about\n"
-        "   its smallest axis, where the flips stop, in: {}.\n",
-        join_names(exact_l), ceiling, join_names(saturated));
+    fmt::print(" - L stays exactly L0 (the world L is the state these steps leave alone; their errors show "
+               "in E, R and\n"
+               "   the flips) in: {}.\n"
+               "   At h = 1/60 s E ends at |L|^2/(2 I_min) = {:.2f} E0, the most this |L| allows: the body "
+               "spins about\n"
+               "   its smallest axis, where the flips stop, in: {}.\n",
+               join_names(exact_l), ceiling, join_names(saturated));
   }
   {
     std::vector<std::string> better, right;
@@ -574,17 +602,17 @@ int main() {
         better.push_back(kit::flag_name(integrators[i]));
       if (d.flips == expected) right.push_back(kit::flag_name(integrators[i]));
     }
-    fmt::print(
-        " - At equal CPU per simulated second, drifting less than Bullet's working default (x{:.0f}) in both E and L:\n"
-        "   {}; flipping {} times as the closed form does: {}.\n",
-        heavy, join_names(better), expected, join_names(right));
+    fmt::print(" - At equal CPU per simulated second, drifting less than Bullet's working default (x{:.0f}) "
+               "in both E and L:\n"
+               "   {}; flipping {} times as the closed form does: {}.\n",
+               heavy, join_names(better), expected, join_names(right));
     const EqualCost& m = equal[midpoint];
     if (m.drift.diverged_at < 0)
-      fmt::print(
-          "   The implicit midpoint at h = {:.2e} s: max |dE|/E {} and |L - L0|/|L0| {};\n"
-          "   kit / Bullet x{:.0f}: {} and {}.\n",
-          m.h, kit::sci(m.drift.energy, 1), kit::sci(m.drift.direction, 1), heavy,
-          ratio_text(m.drift.energy, bullet_heavy.energy), ratio_text(m.drift.direction, bullet_heavy.direction));
+      fmt::print("   The implicit midpoint at h = {:.2e} s: max |dE|/E {} and |L - L0|/|L0| {};\n"
+                 "   kit / Bullet x{:.0f}: {} and {}.\n",
+                 m.h, kit::sci(m.drift.energy, 1), kit::sci(m.drift.direction, 1), heavy,
+                 ratio_text(m.drift.energy, bullet_heavy.energy),
+                 ratio_text(m.drift.direction, bullet_heavy.direction));
   }
   fmt::print("\nThe whole benchmark: {:.1f} s.\n", total.seconds());
   return 0;

@@ -39,7 +39,9 @@ void write_seeds(const std::string& dir) {
   run_chapter({"--flag-table"});
   std::cout.rdbuf(saved);
   int n = 0;
-  const auto seed = [&](const std::string& text) { std::ofstream(fmt::format("{}/seed-{:03}", dir, n++)) << text; };
+  const auto seed = [&](const std::string& text) {
+    std::ofstream(fmt::format("{}/seed-{:03}", dir, n++)) << text;
+  };
   seed("--help");
   seed("--json\n--no-plot");
   for (const auto& flag : nlohmann::json::parse(captured.str())) {
@@ -62,8 +64,10 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::vector<std::string> words(1);
   for (std::size_t i = 0; i < size && words.size() <= 64; ++i) {
-    if (data[i] == '\n') words.emplace_back();
-    else words.back().push_back(char(data[i]));
+    if (data[i] == '\n')
+      words.emplace_back();
+    else
+      words.back().push_back(char(data[i]));
   }
   const int code = run_chapter(words);
   if (code != 0 && code != 2) {

@@ -93,8 +93,8 @@ inline kit::Spring random_spring(std::mt19937_64& rng) {
 
 inline std::string describe(const kit::Spring& s) {
   std::ostringstream text;
-  text << "m = " << s.mass << " kg, K = " << s.stiffness << " N/m, mu = " << s.damping << " N·s/m, L0 = " << s.rest_length
-       << " m (zeta = " << s.damping_ratio() << ")";
+  text << "m = " << s.mass << " kg, K = " << s.stiffness << " N/m, mu = " << s.damping
+       << " N·s/m, L0 = " << s.rest_length << " m (zeta = " << s.damping_ratio() << ")";
   return text.str();
 }
 

@@ -3,8 +3,8 @@
 
 #include <kit_catch.hpp>
 
-#include "explicit_euler.hpp"
 #include "cases.hpp"
+#include "explicit_euler.hpp"
 
 using kit::test::uniform;
 

@@ -3,8 +3,8 @@
 
 #include <kit_catch.hpp>
 
-#include "implicit_euler.hpp"
 #include "cases.hpp"
+#include "implicit_euler.hpp"
 
 using kit::test::uniform;
 

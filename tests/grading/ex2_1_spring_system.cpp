@@ -27,7 +27,8 @@ TEST_CASE("ex 2.1: the rest length at zero velocity is an equilibrium: A (L0, 0)
   for (int trial = 0; trial < 20; ++trial) {
     const auto spring = kit::test::random_spring(rng);
     const auto s = kit::spring_system(spring);
-    CHECK((s.A * kit::Vec2(spring.rest_length, 0.0) + s.b).norm() <= 1e-12 * (1 + spring.stiffness / spring.mass));
+    CHECK((s.A * kit::Vec2(spring.rest_length, 0.0) + s.b).norm() <=
+          1e-12 * (1 + spring.stiffness / spring.mass));
   }
 }
 

@@ -3,10 +3,11 @@
 
 #include <kit_catch.hpp>
 
-#include "implicit_euler_spring.hpp"
 #include "cases.hpp"
+#include "implicit_euler_spring.hpp"
 
-TEST_CASE("ex 2.2: each step solves (I − Δt A) u_{k+1} = u_k + Δt b exactly", "[grade][02-spring-stability][ex2.2]") {
+TEST_CASE("ex 2.2: each step solves (I − Δt A) u_{k+1} = u_k + Δt b exactly",
+          "[grade][02-spring-stability][ex2.2]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 50; ++trial) {
     const auto spring = kit::test::random_spring(rng);

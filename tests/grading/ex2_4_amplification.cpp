@@ -24,15 +24,19 @@ TEST_CASE("ex 2.4: R(z) is 1 + z, 1/(1 − z), 1 + z + z²/2 and the degree-4 Ta
   }
 }
 
-TEST_CASE("ex 2.4: on the imaginary axis, explicit Euler grows by sqrt(1 + y²) and implicit Euler shrinks by its inverse",
+TEST_CASE("ex 2.4: on the imaginary axis, explicit Euler grows by sqrt(1 + y²) and implicit Euler shrinks by "
+          "its inverse",
           "[grade][02-spring-stability][ex2.4]") {
   for (double y : {0.01, 0.2, 1.0, 3.0, 100.0}) {
-    CHECK(std::abs(kit::amplification_factor(Scheme::explicit_euler, C(0, y))) == Approx(std::sqrt(1 + y * y)).epsilon(1e-14));
-    CHECK(std::abs(kit::amplification_factor(Scheme::implicit_euler, C(0, y))) == Approx(1 / std::sqrt(1 + y * y)).epsilon(1e-14));
+    CHECK(std::abs(kit::amplification_factor(Scheme::explicit_euler, C(0, y))) ==
+          Approx(std::sqrt(1 + y * y)).epsilon(1e-14));
+    CHECK(std::abs(kit::amplification_factor(Scheme::implicit_euler, C(0, y))) ==
+          Approx(1 / std::sqrt(1 + y * y)).epsilon(1e-14));
   }
 }
 
-TEST_CASE("ex 2.4: RK4 covers the imaginary axis up to 2√2 and no further", "[grade][02-spring-stability][ex2.4]") {
+TEST_CASE("ex 2.4: RK4 covers the imaginary axis up to 2√2 and no further",
+          "[grade][02-spring-stability][ex2.4]") {
   CHECK(std::abs(kit::amplification_factor(Scheme::rk4, C(0, 2.82))) < 1.0);
   CHECK(std::abs(kit::amplification_factor(Scheme::rk4, C(0, 2.84))) > 1.0);
 }

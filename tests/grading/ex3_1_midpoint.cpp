@@ -3,8 +3,8 @@
 
 #include <kit_catch.hpp>
 
-#include "midpoint.hpp"
 #include "cases.hpp"
+#include "midpoint.hpp"
 
 using kit::Vec;
 
@@ -20,11 +20,13 @@ TEST_CASE("ex 3.1: midpoint RK2 reproduces free fall exactly: 1e-12 relative aft
     Vec<2> u(c.x0, c.v0);
     for (long k = 0; k < c.steps; ++k) u = kit::midpoint_step(f, double(k) * c.dt, u, c.dt);
     const double t = double(c.steps) * c.dt;
-    CHECK(u[0] == Approx(c.x0 + c.v0 * t + 0.5 * g * t * t).epsilon(1e-12).margin(1e-12 * kit::test::scale(c)));
+    CHECK(u[0] ==
+          Approx(c.x0 + c.v0 * t + 0.5 * g * t * t).epsilon(1e-12).margin(1e-12 * kit::test::scale(c)));
   }
 }
 
-TEST_CASE("ex 3.1: two evaluations per step, the second at t + Δt/2 from the half step", "[grade][03-rk2][ex3.1]") {
+TEST_CASE("ex 3.1: two evaluations per step, the second at t + Δt/2 from the half step",
+          "[grade][03-rk2][ex3.1]") {
   long calls = 0;
   auto f = [&](double t, const Vec<1>&) {
     ++calls;
@@ -43,7 +45,9 @@ TEST_CASE("ex 3.1: two evaluations per step, the second at t + Δt/2 from the ha
 
 TEST_CASE("ex 3.1: midpoint RK2 is second order on the spring", "[grade][03-rk2][ex3.1]") {
   const auto error = [](long n) {
-    return kit::test::damped_spring_error([](const auto& f, double t, const kit::Vec2& u, double dt) { return kit::midpoint_step(f, t, u, dt); }, n);
+    return kit::test::damped_spring_error([](const auto& f, double t, const kit::Vec2& u,
+                                             double dt) { return kit::midpoint_step(f, t, u, dt); },
+                                          n);
   };
   CHECK(kit::test::observed_order(error, 1000) == Approx(2.0).margin(0.05));
 }

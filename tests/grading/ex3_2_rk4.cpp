@@ -23,7 +23,8 @@ TEST_CASE("ex 3.2: RK4 integrates u' = t³ exactly (Simpson's rule) with four ev
 
 TEST_CASE("ex 3.2: RK4 is fourth order on the spring", "[grade][03-rk2][ex3.2]") {
   const auto error = [](long n) {
-    return kit::test::damped_spring_error([](const auto& f, double t, const kit::Vec2& u, double dt) { return kit::rk4_step(f, t, u, dt); }, n);
+    return kit::test::damped_spring_error(
+        [](const auto& f, double t, const kit::Vec2& u, double dt) { return kit::rk4_step(f, t, u, dt); }, n);
   };
   CHECK(kit::test::observed_order(error, 200) == Approx(4.0).margin(0.1));
 }

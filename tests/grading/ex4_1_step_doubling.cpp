@@ -14,8 +14,9 @@ using V = kit::Vec<1>;
 const auto euler = [](double, const V& y, double dt) { return V(y[0] - dt * y[0]); };
 }  // namespace
 
-TEST_CASE("ex 4.1: guarded step doubling reaches t_end, keeps every accepted e below E_max, and lands on t_end",
-          "[grade][04-adaptive-rk][ex4.1]") {
+TEST_CASE(
+    "ex 4.1: guarded step doubling reaches t_end, keeps every accepted e below E_max, and lands on t_end",
+    "[grade][04-adaptive-rk][ex4.1]") {
   kit::StepDoubling options;
   options.e_min = 1e-6, options.e_max = 1e-4, options.dt0 = 0.5;
   const auto run = kit::step_doubling(euler, 0.0, V(1.0), 3.0, options);
@@ -36,7 +37,8 @@ TEST_CASE("ex 4.1: guarded step doubling reaches t_end, keeps every accepted e b
   CHECK(largest <= options.e_max);
 }
 
-TEST_CASE("ex 4.1: the step grows when the error is small and shrinks when it is large", "[grade][04-adaptive-rk][ex4.1]") {
+TEST_CASE("ex 4.1: the step grows when the error is small and shrinks when it is large",
+          "[grade][04-adaptive-rk][ex4.1]") {
   kit::StepDoubling options;
   options.e_min = 1e-7, options.e_max = 1e-5, options.dt0 = 1e-5;  // far too small at first
   const auto run = kit::step_doubling(euler, 0.0, V(1.0), 1.0, options);
@@ -49,9 +51,11 @@ TEST_CASE("ex 4.1: the step grows when the error is small and shrinks when it is
   CHECK(shrunk.step_sizes.front() < 0.9 / 4);
 }
 
-TEST_CASE("ex 4.1: the lecture's loop with E_max/E_min < 2^(p+1) is reported as trapped, not a hang", "[grade][04-adaptive-rk][ex4.1]") {
+TEST_CASE("ex 4.1: the lecture's loop with E_max/E_min < 2^(p+1) is reported as trapped, not a hang",
+          "[grade][04-adaptive-rk][ex4.1]") {
   kit::StepDoubling options;
-  options.e_min = 4e-7, options.e_max = 1e-6, options.dt0 = 0.1, options.guarded = false, options.max_retries = 100;
+  options.e_min = 4e-7, options.e_max = 1e-6, options.dt0 = 0.1, options.guarded = false,
+  options.max_retries = 100;
   const auto lecture = kit::step_doubling(euler, 0.0, V(1.0), 5.0, options);
   CHECK(lecture.status == kit::RunStatus::trapped);
   CHECK_THAT(lecture.message, ContainsSubstring("trapped"));
@@ -59,9 +63,13 @@ TEST_CASE("ex 4.1: the lecture's loop with E_max/E_min < 2^(p+1) is reported as 
   CHECK(kit::step_doubling(euler, 0.0, V(1.0), 5.0, options).status == kit::RunStatus::finished);
 }
 
-TEST_CASE("ex 4.1: each trial costs three steps of the method: one of dt and two of dt/2", "[grade][04-adaptive-rk][ex4.1]") {
+TEST_CASE("ex 4.1: each trial costs three steps of the method: one of dt and two of dt/2",
+          "[grade][04-adaptive-rk][ex4.1]") {
   long calls = 0;
-  const auto counted = [&](double t, const V& y, double dt) { ++calls; return euler(t, y, dt); };
+  const auto counted = [&](double t, const V& y, double dt) {
+    ++calls;
+    return euler(t, y, dt);
+  };
   kit::StepDoubling options;
   options.e_min = 1e-6, options.e_max = 1e-4, options.dt0 = 0.3;
   const auto run = kit::step_doubling(counted, 0.0, V(1.0), 2.0, options);

@@ -11,13 +11,15 @@
 
 using kit::Vec4;
 
-TEST_CASE("ex 4.2: one Cash–Karp step matches GSL's rkck, solution and error estimate, to 1e-14", "[grade][04-adaptive-rk][ex4.2]") {
+TEST_CASE("ex 4.2: one Cash–Karp step matches GSL's rkck, solution and error estimate, to 1e-14",
+          "[grade][04-adaptive-rk][ex4.2]") {
   const kit::Arenstorf f;
   auto rng = kit::test::random_engine();
   // A state at least 0.2 from the Earth (−μ, 0) and the Moon (1 − μ, 0): a step of h ≤ 0.05 from
   // nearer could pass through one, where every method's stages are infinite (1 seed in 1500 did).
   const auto far_from_the_bodies = [](const Vec4& y) {
-    return std::hypot(y[0] + kit::Arenstorf::mu, y[1]) >= 0.2 && std::hypot(y[0] - 1 + kit::Arenstorf::mu, y[1]) >= 0.2;
+    return std::hypot(y[0] + kit::Arenstorf::mu, y[1]) >= 0.2 &&
+           std::hypot(y[0] - 1 + kit::Arenstorf::mu, y[1]) >= 0.2;
   };
   for (int trial = 0; trial < 20; ++trial) {
     Vec4 y;
@@ -40,7 +42,8 @@ TEST_CASE("ex 4.2: one Cash–Karp step matches GSL's rkck, solution and error e
   }
 }
 
-TEST_CASE("ex 4.2: Dormand–Prince is FSAL: the last stage is f(t + h, y_{n+1}), 6 new evaluations", "[grade][04-adaptive-rk][ex4.2]") {
+TEST_CASE("ex 4.2: Dormand–Prince is FSAL: the last stage is f(t + h, y_{n+1}), 6 new evaluations",
+          "[grade][04-adaptive-rk][ex4.2]") {
   const kit::Arenstorf f;
   const Vec4 y = kit::Arenstorf::initial_state();
   const auto step = kit::embedded_step(f, kit::dormand_prince(), 0.0, y, 0.01, f(0.0, y));
@@ -55,8 +58,12 @@ TEST_CASE("ex 4.2: the propagated solution has the tableau's order, the error es
   const auto growth = [](double, const V& y) { return V(y[0]); };
   for (const auto* tableau : {&kit::cash_karp(), &kit::dormand_prince(), &kit::bogacki_shampine()}) {
     INFO(tableau->name);
-    const auto local = [&](double h) { return std::abs(kit::embedded_step(growth, *tableau, 0.0, V(1.0), h, V(1.0)).y[0] - std::exp(h)); };
-    const auto estimate = [&](double h) { return std::abs(kit::embedded_step(growth, *tableau, 0.0, V(1.0), h, V(1.0)).error[0]); };
+    const auto local = [&](double h) {
+      return std::abs(kit::embedded_step(growth, *tableau, 0.0, V(1.0), h, V(1.0)).y[0] - std::exp(h));
+    };
+    const auto estimate = [&](double h) {
+      return std::abs(kit::embedded_step(growth, *tableau, 0.0, V(1.0), h, V(1.0)).error[0]);
+    };
     CHECK(std::log2(local(0.2) / local(0.1)) == Approx(tableau->order + 1).margin(0.3));
     CHECK(std::log2(estimate(0.2) / estimate(0.1)) == Approx(tableau->embedded_order + 1).margin(0.3));
   }

@@ -7,7 +7,8 @@
 #include "cases.hpp"
 #include "pi_controller.hpp"
 
-TEST_CASE("ex 4.3: an accepted step's factor is safety·err^(−α)·prev^β, clamped to [0.2, 10]", "[grade][04-adaptive-rk][ex4.3]") {
+TEST_CASE("ex 4.3: an accepted step's factor is safety·err^(−α)·prev^β, clamped to [0.2, 10]",
+          "[grade][04-adaptive-rk][ex4.3]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 100; ++trial) {
     kit::PiController c;
@@ -15,13 +16,15 @@ TEST_CASE("ex 4.3: an accepted step's factor is safety·err^(−α)·prev^β, cl
     kit::remember_accepted(c, previous);
     const double err = std::exp(kit::test::uniform(rng, std::log(1e-12), 0.0));
     // dopri5.f: FAC = err^EXPO1 / FACOLD^BETA; FAC = max(1/FAC2, min(1/FAC1, FAC/SAFE)); HNEW = H/FAC.
-    const double fac = std::max(1.0 / 10, std::min(1.0 / 0.2, std::pow(err, 0.17) / std::pow(previous, 0.04) / 0.9));
+    const double fac =
+        std::max(1.0 / 10, std::min(1.0 / 0.2, std::pow(err, 0.17) / std::pow(previous, 0.04) / 0.9));
     INFO("err = " << err << ", previous = " << previous);
     CHECK(kit::pi_step_factor(c, err) == Approx(1.0 / fac).epsilon(1e-12));
   }
 }
 
-TEST_CASE("ex 4.3: a rejected step shrinks by max(0.2, safety·err^(−α)), never grows", "[grade][04-adaptive-rk][ex4.3]") {
+TEST_CASE("ex 4.3: a rejected step shrinks by max(0.2, safety·err^(−α)), never grows",
+          "[grade][04-adaptive-rk][ex4.3]") {
   const kit::PiController c;
   for (double err : {1.0001, 2.0, 10.0, 1e3, 1e12, std::numeric_limits<double>::infinity()}) {
     INFO("err = " << err);
@@ -31,7 +34,8 @@ TEST_CASE("ex 4.3: a rejected step shrinks by max(0.2, safety·err^(−α)), nev
   }
 }
 
-TEST_CASE("ex 4.3: the memory term: a smaller previous error allows less growth", "[grade][04-adaptive-rk][ex4.3]") {
+TEST_CASE("ex 4.3: the memory term: a smaller previous error allows less growth",
+          "[grade][04-adaptive-rk][ex4.3]") {
   kit::PiController calm, rough;
   kit::remember_accepted(calm, 0.5);
   kit::remember_accepted(rough, 1e-3);

@@ -71,7 +71,8 @@ TEST_CASE("ex 5.1: speed, lifetime, size, colour and alpha are each uniform in m
     return sxy / std::sqrt(sxx * syy);
   };
   const double bound = 5 / std::sqrt(double(speed.size()));
-  for (const auto* other : {&lifetime, &size, &alpha, &r, &g, &b}) CHECK(std::abs(correlation(speed, *other)) < bound);
+  for (const auto* other : {&lifetime, &size, &alpha, &r, &g, &b})
+    CHECK(std::abs(correlation(speed, *other)) < bound);
   CHECK(std::abs(correlation(lifetime, size)) < bound);
   CHECK(std::abs(correlation(r, g)) < bound);
   CHECK(std::abs(correlation(g, b)) < bound);

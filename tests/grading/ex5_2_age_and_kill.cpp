@@ -63,7 +63,7 @@ TEST_CASE("ex 5.2: swap-remove keeps the alive particles dense, also when the la
   CHECK(ps.size() == 2);
   CHECK(ids(ps) == std::set<std::uint32_t>{0, 2});
   for (std::size_t i = 0; i < ps.size(); ++i) CHECK(ps.x[i] == float(ps.id[i]));  // attributes moved together
-  CHECK(ps.x.data() == storage);  // nothing reallocated
+  CHECK(ps.x.data() == storage);                                                  // nothing reallocated
   CHECK(ps.capacity() == 64);
 }
 
@@ -91,7 +91,8 @@ TEST_CASE("ex 5.2: a death is recorded for a burst exactly when its emitter burs
   kit::Particles ps = make({0.01f, 0.01f, 9, 0.01f});
   ps.emitter[0] = 1, ps.emitter[1] = 0, ps.emitter[2] = 1, ps.emitter[3] = 1;
   for (std::size_t i = 0; i < ps.size(); ++i)
-    ps.y[i] = 100.f + float(i), ps.z[i] = 200.f + float(i), ps.vx[i] = 300.f + float(i), ps.vz[i] = 400.f + float(i);
+    ps.y[i] = 100.f + float(i), ps.z[i] = 200.f + float(i), ps.vx[i] = 300.f + float(i),
+    ps.vz[i] = 400.f + float(i);
   std::vector<kit::Death> deaths;
   const std::vector<bool> bursts{false, true};
   CHECK(kit::age_and_kill(ps, 0.1f, {}, bursts, deaths) == 3);
@@ -114,8 +115,8 @@ TEST_CASE("ex 5.2: on the boundaries: age = lifetime dies; alpha = threshold and
           "[grade][05-sprites][ex5.2]") {
   std::vector<kit::Death> deaths;
   kit::Particles ps = make({0.5f, 9, 9, 9});
-  ps.age[0] = 0.25f;  // 0.25 + 0.25 = 0.5 exactly: its lifetime is reached
-  ps.alpha[1] = 0.25f;  // exactly the threshold: not below it
+  ps.age[0] = 0.25f;              // 0.25 + 0.25 = 0.5 exactly: its lifetime is reached
+  ps.alpha[1] = 0.25f;            // exactly the threshold: not below it
   ps.y[2] = 0.f, ps.x[3] = 10.f;  // on the floor and on the +x face
   kit::DeathRules rules;
   rules.alpha_below = 0.25;

@@ -20,8 +20,9 @@ kit::SpriteTile uniform_tile(int x0, int y0, int w, int h, float r, float g, flo
 }
 }  // namespace
 
-TEST_CASE("ex 5.3: over gives alpha·c + (1 − alpha)·dst exactly, for colours and alphas that floats hold exactly",
-          "[grade][05-sprites][ex5.3]") {
+TEST_CASE(
+    "ex 5.3: over gives alpha·c + (1 − alpha)·dst exactly, for colours and alphas that floats hold exactly",
+    "[grade][05-sprites][ex5.3]") {
   kit::Image image(4, 3, {0.5, 0.25, 1.0});
   kit::composite_over(image, uniform_tile(1, 1, 2, 1, 1.0f, 0.5f, 0.0f, 0.25f));
   // 0.25·(1, 0.5, 0) + 0.75·(0.5, 0.25, 1) = (0.625, 0.3125, 0.75)
@@ -78,8 +79,8 @@ TEST_CASE("ex 5.3: a sprite hanging over any border is clipped: only the pixels 
     int x0, y0, w, h;
   };
   // Over the left, top, right and bottom borders, a corner, wholly outside, and larger than the image.
-  for (const Case c : {Case{-2, 1, 4, 2}, Case{1, -3, 2, 5}, Case{5, 2, 6, 1}, Case{2, 3, 1, 9}, Case{-1, -1, 2, 2},
-                       Case{7, 0, 3, 3}, Case{-5, -5, 20, 20}}) {
+  for (const Case c : {Case{-2, 1, 4, 2}, Case{1, -3, 2, 5}, Case{5, 2, 6, 1}, Case{2, 3, 1, 9},
+                       Case{-1, -1, 2, 2}, Case{7, 0, 3, 3}, Case{-5, -5, 20, 20}}) {
     INFO("tile at (" << c.x0 << ", " << c.y0 << "), " << c.w << " x " << c.h);
     kit::Image image(6, 4, {0.5, 0.5, 0.5});
     // A guard around the pixels: the image's own buffer must not grow or change size.

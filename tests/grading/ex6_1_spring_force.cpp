@@ -14,13 +14,15 @@ Vec3 random_vector(std::mt19937_64& rng, double scale) {
 }
 }  // namespace
 
-TEST_CASE("ex 6.1: F_a = [K (L0 − l) − μ (v_a − v_b)·x̂] x̂ on random springs", "[grade][06-cloth-explicit][ex6.1]") {
+TEST_CASE("ex 6.1: F_a = [K (L0 − l) − μ (v_a − v_b)·x̂] x̂ on random springs",
+          "[grade][06-cloth-explicit][ex6.1]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 500; ++trial) {
     const Vec3 xa = random_vector(rng, 2), xb = random_vector(rng, 2), va = random_vector(rng, 5),
-                  vb = random_vector(rng, 5);
+               vb = random_vector(rng, 5);
     const double rest = kit::test::uniform(rng, 0.01, 3);
-    const kit::SpringFamily family{std::pow(10, kit::test::uniform(rng, 0, 5)), kit::test::uniform(rng, 0, 20)};
+    const kit::SpringFamily family{std::pow(10, kit::test::uniform(rng, 0, 5)),
+                                   kit::test::uniform(rng, 0, 20)};
     // The closed form, written out by components.
     const double dx = xa[0] - xb[0], dy = xa[1] - xb[1], dz = xa[2] - xb[2];
     const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -37,9 +39,10 @@ TEST_CASE("ex 6.1: Newton's third law, F(b, a) = −F(a, b)", "[grade][06-cloth-
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 200; ++trial) {
     const Vec3 xa = random_vector(rng, 1), xb = random_vector(rng, 1), va = random_vector(rng, 3),
-                  vb = random_vector(rng, 3);
+               vb = random_vector(rng, 3);
     const kit::SpringFamily family{kit::test::uniform(rng, 1, 1e4), kit::test::uniform(rng, 0, 5)};
-    const Vec3 fa = kit::spring_force(xa, xb, va, vb, 0.7, family), fb = kit::spring_force(xb, xa, vb, va, 0.7, family);
+    const Vec3 fa = kit::spring_force(xa, xb, va, vb, 0.7, family),
+               fb = kit::spring_force(xb, xa, vb, va, 0.7, family);
     CHECK((fa + fb).norm() <= 1e-12 * fa.norm() + 1e-300);
     CHECK(fa.norm() > 0);
   }
@@ -58,13 +61,17 @@ TEST_CASE("ex 6.1: damping resists only a change of length, never a common motio
   CHECK(std::abs(f[1]) + std::abs(f[2]) < 1e-12);
 }
 
-TEST_CASE("ex 6.1: undamped, the force is minus the gradient of ½K(l − L0)²", "[grade][06-cloth-explicit][ex6.1]") {
+TEST_CASE("ex 6.1: undamped, the force is minus the gradient of ½K(l − L0)²",
+          "[grade][06-cloth-explicit][ex6.1]") {
   auto rng = kit::test::random_engine();
   const Vec3 zero = Vec3::Zero();
   for (int trial = 0; trial < 100; ++trial) {
     const Vec3 xa = random_vector(rng, 1), xb = random_vector(rng, 1);
     const double rest = kit::test::uniform(rng, 0.1, 2), k = kit::test::uniform(rng, 1, 1000), h = 1e-6;
-    const auto energy = [&](const Vec3& p) { const double e = (p - xb).norm() - rest; return 0.5 * k * e * e; };
+    const auto energy = [&](const Vec3& p) {
+      const double e = (p - xb).norm() - rest;
+      return 0.5 * k * e * e;
+    };
     const Vec3 f = kit::spring_force(xa, xb, zero, zero, rest, {k, 0});
     for (int axis = 0; axis < 3; ++axis) {
       Vec3 step = zero;
@@ -74,7 +81,8 @@ TEST_CASE("ex 6.1: undamped, the force is minus the gradient of ½K(l − L0)²"
   }
 }
 
-TEST_CASE("ex 6.1: a spring of zero length has no direction and no force", "[grade][06-cloth-explicit][ex6.1]") {
+TEST_CASE("ex 6.1: a spring of zero length has no direction and no force",
+          "[grade][06-cloth-explicit][ex6.1]") {
   const Vec3 p(0.3, -1, 2);
   const Vec3 f = kit::spring_force(p, p, {1, 0, 0}, {0, 0, 0}, 0.5, {100, 1});
   CHECK(f.allFinite());

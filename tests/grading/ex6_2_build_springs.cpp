@@ -15,7 +15,8 @@ using Pair = std::pair<long, long>;
 // The neighbours of every node, worked out here from the grid coordinates, each pair once.
 std::map<Pair, kit::SpringKind> expected_pairs(int nx, int ny, const kit::SpringLayout& layout) {
   std::map<Pair, kit::SpringKind> pairs;
-  const auto join = [&](bool present, kit::SpringKind kind, std::initializer_list<std::pair<int, int>> offsets) {
+  const auto join = [&](bool present, kit::SpringKind kind,
+                        std::initializer_list<std::pair<int, int>> offsets) {
     if (!present) return;
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)

@@ -35,7 +35,8 @@ TEST_CASE("ex 6.3: v += Δt F/m node by node, then x += Δt v with the NEW v; on
     const long n = long(kit::test::uniform(rng, 1, 40));
     TestForces forces;
     forces.k = Eigen::VectorXd::NullaryExpr(n, [&] { return kit::test::uniform(rng, 0, 100); });
-    const Eigen::VectorXd masses = Eigen::VectorXd::NullaryExpr(n, [&] { return kit::test::uniform(rng, 1e-3, 2); });
+    const Eigen::VectorXd masses =
+        Eigen::VectorXd::NullaryExpr(n, [&] { return kit::test::uniform(rng, 1e-3, 2); });
     kit::NodeArray x = random_nodes(rng, n, 1), v = random_nodes(rng, n, 3), f;
     const kit::NodeArray x0 = x, v0 = v;
     const double dt = kit::test::uniform(rng, 1e-4, 1e-2);
@@ -51,7 +52,8 @@ TEST_CASE("ex 6.3: v += Δt F/m node by node, then x += Δt v with the NEW v; on
   }
 }
 
-TEST_CASE("ex 6.3: a pinned node stays where it is, at rest, whatever the force", "[grade][06-cloth-explicit][ex6.3]") {
+TEST_CASE("ex 6.3: a pinned node stays where it is, at rest, whatever the force",
+          "[grade][06-cloth-explicit][ex6.3]") {
   auto rng = kit::test::random_engine();
   const long n = 12;
   TestForces forces;

@@ -22,8 +22,9 @@ TEST_CASE("ex 6.4: a node inside goes to the surface along its radius; nodes out
   const kit::SphereCollider sphere{{0.3, -0.2, 1.0}, 0.8, 0.4};
   kit::NodeArray x(400, 3), v(400, 3);
   for (int i = 0; i < 400; ++i)
-    for (int axis = 0; axis < 3; ++axis) x(i, axis) = kit::test::uniform(rng, -1.5, 1.5) + sphere.center[axis],
-                                         v(i, axis) = kit::test::uniform(rng, -2, 2);
+    for (int axis = 0; axis < 3; ++axis)
+      x(i, axis) = kit::test::uniform(rng, -1.5, 1.5) + sphere.center[axis],
+           v(i, axis) = kit::test::uniform(rng, -2, 2);
   const kit::NodeArray x0 = x, v0 = v;
   long inside = 0;
   for (int i = 0; i < 400; ++i) inside += (x0.row(i).transpose() - sphere.center).norm() < sphere.radius;
@@ -40,10 +41,11 @@ TEST_CASE("ex 6.4: a node inside goes to the surface along its radius; nodes out
   }
 }
 
-TEST_CASE("ex 6.4: an inward velocity loses its normal part, and friction takes μ|v_n| off the tangential part",
-          "[grade][06-cloth-explicit][ex6.4]") {
+TEST_CASE(
+    "ex 6.4: an inward velocity loses its normal part, and friction takes μ|v_n| off the tangential part",
+    "[grade][06-cloth-explicit][ex6.4]") {
   const Vec3 centre(0, 0, 0);
-  const Vec3 inside(0, 0.9, 0);  // under the top of a unit sphere: the normal is +y
+  const Vec3 inside(0, 0.9, 0);   // under the top of a unit sphere: the normal is +y
   const Vec3 velocity(3, -2, 0);  // v_n = −2, v_t = (3, 0, 0)
   for (double mu : {0.0, 0.5, 1.0, 1.5, 10.0}) {
     kit::NodeArray x = row(inside), v = row(velocity);
@@ -81,7 +83,8 @@ TEST_CASE("ex 6.4: the response holds for any normal, not only +y", "[grade][06-
     Vec3 t = n.cross(Vec3(0, 1, 0)).normalized();
     const double vn = -kit::test::uniform(rng, 0.1, 3), vt = kit::test::uniform(rng, 0, 3);
     const Vec3 velocity = vn * n + vt * t;
-    kit::NodeArray x = row(sphere.center + kit::test::uniform(rng, 0.1, 0.99) * sphere.radius * n), v = row(velocity);
+    kit::NodeArray x = row(sphere.center + kit::test::uniform(rng, 0.1, 0.99) * sphere.radius * n),
+                   v = row(velocity);
     kit::collide_sphere(x, v, sphere);
     const Vec3 expected = std::max(0.0, vt - sphere.friction * -vn) * t;
     INFO("trial " << trial << ": n = " << n.transpose() << ", v_n = " << vn << ", v_t = " << vt);

@@ -55,8 +55,9 @@ RandomSpring random_spring(std::mt19937_64& rng) {
 }
 }  // namespace
 
-TEST_CASE("ex 7.1: without the clamp, the block is the derivative of f_a = −K (l − L0) x̂, stretched or compressed",
-          "[grade][07-cloth-implicit][ex7.1]") {
+TEST_CASE(
+    "ex 7.1: without the clamp, the block is the derivative of f_a = −K (l − L0) x̂, stretched or compressed",
+    "[grade][07-cloth-implicit][ex7.1]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 300; ++trial) {
     const RandomSpring s = random_spring(rng);
@@ -118,7 +119,8 @@ TEST_CASE("ex 7.1: eigenvalues: −K along the spring, K (L0/l − 1) twice acro
       const Eigen::Vector3d expected(-s.k, transverse, transverse);
       INFO("clamp = " << clamp << ", eigenvalues " << eigen.eigenvalues().transpose() << ", expected "
                       << expected.transpose());
-      CHECK((eigen.eigenvalues() - expected).cwiseAbs().maxCoeff() <= 1e-9 * s.k * std::max(1.0, rest / s.length));
+      CHECK((eigen.eigenvalues() - expected).cwiseAbs().maxCoeff() <=
+            1e-9 * s.k * std::max(1.0, rest / s.length));
     }
   }
 }
@@ -152,7 +154,8 @@ TEST_CASE("ex 7.1: closed forms: L0 = 0 gives −K I; l = L0 gives −K x̂x̂�
   const Vec3 b(0.25, -1, 0.5);
   for (const Vec3& a : {Vec3(1, 2, 3), Vec3(-0.5, 0, 0), Vec3(0.25, -1, 4)}) {
     for (bool clamp : {false, true})
-      CHECK(largest_entry(kit::spring_stiffness_block(a, b, 0.0, k, clamp) + k * Mat3::Identity()) <= 1e-12 * k);
+      CHECK(largest_entry(kit::spring_stiffness_block(a, b, 0.0, k, clamp) + k * Mat3::Identity()) <=
+            1e-12 * k);
   }
   // At its rest length along y: only the yy entry, −K, with or without the clamp.
   Mat3 along_y = Mat3::Zero();

@@ -43,7 +43,8 @@ Mat3 physical_block(const Vec3& xa, const Vec3& xb, double rest, double k) {
   const double squared = d.dot(d), l = std::sqrt(squared);
   Mat3 j;
   for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) j(r, c) = -k * ((rest / l) * d[r] * d[c] / squared + (r == c ? 1 - rest / l : 0.0));
+    for (int c = 0; c < 3; ++c)
+      j(r, c) = -k * ((rest / l) * d[r] * d[c] / squared + (r == c ? 1 - rest / l : 0.0));
   return j;
 }
 
@@ -72,7 +73,7 @@ RandomCloth random_cloth(std::mt19937_64& rng, bool physical_blocks) {
     const double rest = kit::test::uniform(rng, 0.1, 2);
     cloth.springs.add(a, b, rest, {k, mu}, kit::SpringKind::structural);
     cloth.blocks.push_back(physical_blocks ? physical_block(cloth.x.row(a), cloth.x.row(b), rest, k)
-                                          : random_symmetric(rng, k));
+                                           : random_symmetric(rng, k));
   }
   if (kit::test::uniform(rng, 0, 1) < 0.5) cloth.drag = kit::test::uniform(rng, 0, 3);
   cloth.h = kit::test::uniform(rng, 1e-4, 0.05);
@@ -121,8 +122,8 @@ struct Assembled {
   Eigen::VectorXd b;
 };
 Assembled assemble(const RandomCloth& cloth) {
-  const kit::ImplicitSystemInput in{cloth.springs, cloth.x, cloth.v, cloth.f, cloth.masses, cloth.blocks,
-                                    cloth.drag, cloth.h};
+  const kit::ImplicitSystemInput in{cloth.springs, cloth.x,      cloth.v,    cloth.f,
+                                    cloth.masses,  cloth.blocks, cloth.drag, cloth.h};
   kit::SparseMatrix A;
   Eigen::VectorXd b;
   kit::assemble_implicit_system(in, A, b);
@@ -140,15 +141,17 @@ TEST_CASE("ex 7.2: A = M − h ∂f/∂v − h² ∂f/∂x and b = h (f + h ∂f
     const Eigen::Index size = 3 * cloth.x.rows();
     const DenseSystem expected = dense_reference(cloth);
     const Assembled got = assemble(cloth);
-    INFO("trial " << trial << ": " << cloth.x.rows() << " nodes, " << cloth.springs.size() << " springs, h = "
-                  << cloth.h << " s, drag " << (cloth.drag ? std::to_string(*cloth.drag) : std::string("none"))
+    INFO("trial " << trial << ": " << cloth.x.rows() << " nodes, " << cloth.springs.size()
+                  << " springs, h = " << cloth.h << " s, drag "
+                  << (cloth.drag ? std::to_string(*cloth.drag) : std::string("none"))
                   << (trial % 2 == 0 ? ", physical blocks" : ", arbitrary symmetric blocks"));
     REQUIRE((got.A.rows() == size && got.A.cols() == size));
     REQUIRE(got.b.size() == size);
     INFO("A got\n" << got.A << "\nA expected\n" << expected.A);
     CHECK(largest(got.A - expected.A) <= 1e-12 * largest(expected.A));
     INFO("b got " << got.b.transpose() << "\nb expected " << expected.b.transpose());
-    CHECK(largest(got.b - expected.b) <= 1e-12 * (largest(expected.b) + cloth.h * cloth.h * largest(expected.A)));
+    CHECK(largest(got.b - expected.b) <=
+          1e-12 * (largest(expected.b) + cloth.h * cloth.h * largest(expected.A)));
   }
 }
 
@@ -164,7 +167,8 @@ TEST_CASE("ex 7.2: A is symmetric, and a common velocity change meets only the m
     CHECK(largest(got.A - got.A.transpose()) <= 1e-12 * largest(got.A));
     // A (t, t, …, t): every spring block meets its negative in the same row, so node i gets
     // m_i (1 + h c) t.
-    const Vec3 t(kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1));
+    const Vec3 t(kit::test::uniform(rng, -1, 1), kit::test::uniform(rng, -1, 1),
+                 kit::test::uniform(rng, -1, 1));
     const Eigen::VectorXd product = got.A * t.replicate(n, 1);
     double worst = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -220,7 +224,8 @@ TEST_CASE("ex 7.2: drag adds exactly h m c on each diagonal entry; no drag is dr
   }
 }
 
-TEST_CASE("ex 7.2: one damped spring along x at its rest length, by hand", "[grade][07-cloth-implicit][ex7.2]") {
+TEST_CASE("ex 7.2: one damped spring along x at its rest length, by hand",
+          "[grade][07-cloth-implicit][ex7.2]") {
   // Nodes 0 at (1, 0, 0) and 1 at the origin, m = 2 kg and 0.5 kg; K = 400 N/m, μ = 3 N·s/m,
   // L0 = 1 m, h = 0.1 s, no drag. At rest length the stiffness block is −K on xx only, so the
   // spring's block of A is B = (h μ + h² K) on xx: 0.3 + 4 = 4.3 kg.

@@ -30,7 +30,7 @@ struct Constraints {
   std::vector<Kind> kind;
   std::vector<Vec3> normal;  // of the plane nodes
   std::vector<Mat3> filters;
-  long dofs = 0;                // the dimension of the directions the nodes may move in
+  long dofs = 0;  // the dimension of the directions the nodes may move in
 };
 
 Constraints make_constraints(const std::vector<Kind>& kind, std::mt19937_64& rng) {
@@ -77,10 +77,13 @@ Eigen::MatrixXd allowed_basis(const Constraints& c) {
 }
 
 /// S w, node by node, written with the basis: S = Z Zᵀ.
-Eigen::VectorXd project(const Eigen::MatrixXd& z, const Eigen::VectorXd& w) { return z * (z.transpose() * w); }
+Eigen::VectorXd project(const Eigen::MatrixXd& z, const Eigen::VectorXd& w) {
+  return z * (z.transpose() * w);
+}
 
 /// The constrained solution by a dense Cholesky of Zᵀ A Z: x = Z (Zᵀ A Z)⁻¹ Zᵀ b.
-Eigen::VectorXd constrained_solution(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, const Eigen::MatrixXd& z) {
+Eigen::VectorXd constrained_solution(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
+                                     const Eigen::MatrixXd& z) {
   const Eigen::MatrixXd reduced = z.transpose() * a * z;
   return z * reduced.llt().solve(z.transpose() * b);
 }
@@ -99,8 +102,8 @@ Eigen::MatrixXd random_spd(std::mt19937_64& rng, long nodes, double spread) {
     const Eigen::Matrix2d outer = w * w.transpose();
     a(p, p) += outer(0, 0), a(q, q) += outer(1, 1), a(p, q) += outer(0, 1), a(q, p) += outer(1, 0);
   }
-  const Eigen::VectorXd scale =
-      Eigen::VectorXd::NullaryExpr(size, [&] { return std::pow(10.0, kit::test::uniform(rng, -spread, spread)); });
+  const Eigen::VectorXd scale = Eigen::VectorXd::NullaryExpr(
+      size, [&] { return std::pow(10.0, kit::test::uniform(rng, -spread, spread)); });
   return scale.asDiagonal() * a * scale.asDiagonal();
 }
 
@@ -146,8 +149,8 @@ Eigen::MatrixXd cloth_matrix(std::mt19937_64& rng, int nx, int ny) {
 }
 
 /// What a constrained solve must satisfy, checked in one place (a fixed number of assertions).
-void check_constrained_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, const Constraints& c, double tol,
-                             const kit::PcgResult& got) {
+void check_constrained_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, const Constraints& c,
+                             double tol, const kit::PcgResult& got) {
   const Eigen::MatrixXd z = allowed_basis(c);
   REQUIRE(got.x.size() == b.size());
   CHECK(got.x.allFinite());
@@ -170,11 +173,12 @@ void check_constrained_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
   CHECK(pinned == 0);
   CHECK(normal <= 1e-12 * (got.x.cwiseAbs().maxCoeff() + 1e-300));
   // Against the constrained solution by a dense factorisation, and within the dimension of the
-  // problem (conjugate gradient terminates in at most that many steps in exact arithmetic; two more for round-off).
-  // The error bound of a residual: |x − x_exact| ≤ cond(Zᵀ A Z) · (residual ratio) · |x_exact|.
+  // problem (conjugate gradient terminates in at most that many steps in exact arithmetic; two more for
+  // round-off). The error bound of a residual: |x − x_exact| ≤ cond(Zᵀ A Z) · (residual ratio) · |x_exact|.
   const Eigen::VectorXd exact = constrained_solution(a, b, z);
   const Eigen::VectorXd spectrum =
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(z.transpose() * a * z, Eigen::EigenvaluesOnly).eigenvalues();
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(z.transpose() * a * z, Eigen::EigenvaluesOnly)
+          .eigenvalues();
   const double condition = spectrum.maxCoeff() / spectrum.minCoeff();
   INFO("|x − x_exact| = " << (got.x - exact).norm() << ", |x_exact| = " << exact.norm() << ", dofs " << c.dofs
                           << ", condition " << condition);
@@ -183,7 +187,8 @@ void check_constrained_solve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b,
 }
 }  // namespace
 
-TEST_CASE("ex 7.3: random SPD systems with free, pinned and plane nodes: solved to the tolerance, constraints exact",
+TEST_CASE("ex 7.3: random SPD systems with free, pinned and plane nodes: solved to the tolerance, "
+          "constraints exact",
           "[grade][07-cloth-implicit][ex7.3]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 60; ++trial) {
@@ -193,7 +198,8 @@ TEST_CASE("ex 7.3: random SPD systems with free, pinned and plane nodes: solved 
     const Eigen::VectorXd b = random_vector(rng, 3 * nodes);
     const double tol = std::pow(10.0, kit::test::uniform(rng, -10, -6));
     INFO("trial " << trial << ": " << nodes << " nodes, " << c.dofs << " free directions, tolerance " << tol);
-    check_constrained_solve(a, b, c, tol, kit::filtered_pcg(sparse(a), b, c.filters, tol, 10 * int(a.rows())));
+    check_constrained_solve(a, b, c, tol,
+                            kit::filtered_pcg(sparse(a), b, c.filters, tol, 10 * int(a.rows())));
   }
 }
 
@@ -248,7 +254,8 @@ TEST_CASE("ex 7.3: identity filters give plain Jacobi-preconditioned CG: Eigen's
   }
 }
 
-TEST_CASE("ex 7.3: preconditioned by diag(A): a system scaled over 8 decades takes the iterations of the unscaled one",
+TEST_CASE("ex 7.3: preconditioned by diag(A): a system scaled over 8 decades takes the iterations of the "
+          "unscaled one",
           "[grade][07-cloth-implicit][ex7.3]") {
   // With E diagonal, diag(E A E) = E diag(A) E: the preconditioned iterates of (E A E) y = E b
   // are those of A x = b, y = E⁻¹ x. Unpreconditioned CG would need far more on E A E.
@@ -256,22 +263,24 @@ TEST_CASE("ex 7.3: preconditioned by diag(A): a system scaled over 8 decades tak
   for (int trial = 0; trial < 10; ++trial) {
     const long nodes = 30;
     const Eigen::MatrixXd a = random_spd(rng, nodes, 0);
-    const Eigen::VectorXd e =
-        Eigen::VectorXd::NullaryExpr(3 * nodes, [&] { return std::pow(10.0, kit::test::uniform(rng, -2, 2)); });
+    const Eigen::VectorXd e = Eigen::VectorXd::NullaryExpr(
+        3 * nodes, [&] { return std::pow(10.0, kit::test::uniform(rng, -2, 2)); });
     const Eigen::MatrixXd scaled = e.asDiagonal() * a * e.asDiagonal();
     const Eigen::VectorXd b = random_vector(rng, 3 * nodes);
     const std::vector<Mat3> identity(std::size_t(nodes), Mat3::Identity());
     const kit::PcgResult plain = kit::filtered_pcg(sparse(a), b, identity, 1e-8, 1000);
     const kit::PcgResult hard = kit::filtered_pcg(sparse(scaled), e.asDiagonal() * b, identity, 1e-8, 1000);
-    INFO("trial " << trial << ": iterations " << plain.iterations << " unscaled, " << hard.iterations << " scaled");
+    INFO("trial " << trial << ": iterations " << plain.iterations << " unscaled, " << hard.iterations
+                  << " scaled");
     CHECK(plain.converged);
     CHECK(hard.converged);
     CHECK(hard.iterations <= plain.iterations + 2);
   }
 }
 
-TEST_CASE("ex 7.3: max_iterations caps the products: one is one exact PCG step, then it reports no convergence",
-          "[grade][07-cloth-implicit][ex7.3]") {
+TEST_CASE(
+    "ex 7.3: max_iterations caps the products: one is one exact PCG step, then it reports no convergence",
+    "[grade][07-cloth-implicit][ex7.3]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 20; ++trial) {
     const long nodes = 10 + random_index(rng, 20);
@@ -308,8 +317,9 @@ TEST_CASE("ex 7.3: max_iterations caps the products: one is one exact PCG step, 
   }
 }
 
-TEST_CASE("ex 7.3: nothing to solve (b = 0, or b only on pinned nodes): x = 0, residual 0, no product, converged",
-          "[grade][07-cloth-implicit][ex7.3]") {
+TEST_CASE(
+    "ex 7.3: nothing to solve (b = 0, or b only on pinned nodes): x = 0, residual 0, no product, converged",
+    "[grade][07-cloth-implicit][ex7.3]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 10; ++trial) {
     const long nodes = 3 + random_index(rng, 10);

@@ -9,12 +9,12 @@
 #include "rigid_rotation_step.hpp"
 
 namespace {
-using kit::test::random_vector;
-using kit::test::random_rotation;
-using kit::test::random_matrix;
-using kit::test::largest_entry;
 using kit::Mat3;
 using kit::Vec3;
+using kit::test::largest_entry;
+using kit::test::random_matrix;
+using kit::test::random_rotation;
+using kit::test::random_vector;
 
 }  // namespace
 
@@ -49,7 +49,9 @@ TEST_CASE("ex 8.1: one step is R + h ω* R, ω* on the left, for rotations and f
     for (int c = 0; c < 3; ++c) expected.col(c) = r.col(c) + h * omega.cross(r.col(c));
     const Mat3 got = kit::explicit_rotation_step(r, omega, h);
     INFO("trial " << trial << ": h = " << h << " s, omega = " << omega.transpose() << " rad/s\nR =\n"
-                  << r << "\ngot\n" << got << "\nexpected R + h ω* R\n" << expected);
+                  << r << "\ngot\n"
+                  << got << "\nexpected R + h ω* R\n"
+                  << expected);
     // R ω* (the product in the wrong order) misses by O(h|ω|), a renormalised R by O(h²|ω|²).
     CHECK(largest_entry(got - expected) <= 1e-14 * (1 + largest_entry(r)) * (1 + h * omega.norm()));
   }
@@ -94,7 +96,9 @@ TEST_CASE("ex 8.1: n steps at constant ω keep the axis and turn the plane acros
     Mat3 r = r0;
     r = kit::remote::iterated("explicit_rotation_step", n, r, omega, h);  // n steps, in the student's program
     INFO("trial " << trial << ": " << n << " steps of h = " << h << " s at omega = " << omega.transpose()
-                  << " rad/s\ngot\n" << r << "\nexpected\n" << expected);
+                  << " rad/s\ngot\n"
+                  << r << "\nexpected\n"
+                  << expected);
     CHECK(largest_entry(r - expected) <= 1e-12 * grown);
   }
 }

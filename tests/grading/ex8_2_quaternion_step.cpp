@@ -10,12 +10,12 @@
 #include "rigid_quaternion_step.hpp"
 
 namespace {
-using kit::test::random_vector;
-using kit::test::random_unit_quaternion;
-using kit::test::largest_entry;
 using kit::Mat3;
 using kit::Quat;
 using kit::Vec3;
+using kit::test::largest_entry;
+using kit::test::random_unit_quaternion;
+using kit::test::random_vector;
 
 /// The lecture's step written by components: (0, ω) ⊗ (w, v) = (−ω·v, w ω + ω × v), so
 /// q + h/2 (0, ω) ⊗ q = (w − h/2 ω·v, v + h/2 (w ω + ω × v)), then divided by its norm.
@@ -26,7 +26,9 @@ Quat expected_step(const Quat& q, const Vec3& omega, double h) {
   return Quat(w / norm, v.x() / norm, v.y() / norm, v.z() / norm);
 }
 
-double coefficient_gap(const Quat& a, const Quat& b) { return (a.coeffs() - b.coeffs()).cwiseAbs().maxCoeff(); }
+double coefficient_gap(const Quat& a, const Quat& b) {
+  return (a.coeffs() - b.coeffs()).cwiseAbs().maxCoeff();
+}
 }  // namespace
 
 TEST_CASE("ex 8.2: one step is (q + h/2 (0, ω) ⊗ q) / |…| for random unit q, ω and h",
@@ -38,9 +40,9 @@ TEST_CASE("ex 8.2: one step is (q + h/2 (0, ω) ⊗ q) / |…| for random unit q
     const double h = kit::test::uniform(rng, 1e-4, 0.1);
     const Quat got = kit::quaternion_step(q, omega, h);
     const Quat expected = expected_step(q, omega, h);
-    INFO("trial " << trial << ": q = " << q.coeffs().transpose() << " (x, y, z, w), omega = " << omega.transpose()
-                  << " rad/s, h = " << h << " s\ngot      " << got.coeffs().transpose() << "\nexpected "
-                  << expected.coeffs().transpose());
+    INFO("trial " << trial << ": q = " << q.coeffs().transpose()
+                  << " (x, y, z, w), omega = " << omega.transpose() << " rad/s, h = " << h << " s\ngot      "
+                  << got.coeffs().transpose() << "\nexpected " << expected.coeffs().transpose());
     // Without the ½ the step is twice as long; q ⊗ (0, ω) flips the sign of ω × v; without the
     // division |q| = sqrt(1 + h²|ω|²/4): each misses by far more than round-off.
     CHECK(coefficient_gap(got, expected) <= 1e-14);
@@ -55,7 +57,8 @@ TEST_CASE("ex 8.2: the step is normalised: |q| = 1 after every one of 1e4 steps,
     const Vec3 omega = random_vector(rng, 1).normalized() * std::pow(10.0, kit::test::uniform(rng, -2, 1));
     const double h = trial == 0 ? 10.0 / omega.norm() : kit::test::uniform(rng, 1e-3, 1);
     double worst = 0;
-    for (const Quat& step : kit::remote::iterate("quaternion_step", 10'000, q, omega, h))  // in the student's program
+    for (const Quat& step :
+         kit::remote::iterate("quaternion_step", 10'000, q, omega, h))  // in the student's program
       worst = std::max(worst, std::abs(step.norm() - 1));
     INFO("trial " << trial << ": h|omega| = " << h * omega.norm() << ", largest | |q| − 1 | " << worst);
     CHECK(worst <= 1e-15);
@@ -73,12 +76,15 @@ TEST_CASE("ex 8.2: at constant ω, n steps turn q by exactly n·2·atan(h|ω|/2)
     // 1 + h/2 (0, ω) = sqrt(1 + h²|ω|²/4) (cos α, sin α ω/|ω|) with tan α = h|ω|/2: once normalised,
     // a turn by 2α about ω, applied on the left (world frame). n steps turn by 2nα.
     const double angle = 2.0 * n * std::atan(0.5 * h * omega.norm());
-    const Mat3 expected = Eigen::AngleAxisd(angle, omega.normalized()).toRotationMatrix() * q0.toRotationMatrix();
+    const Mat3 expected =
+        Eigen::AngleAxisd(angle, omega.normalized()).toRotationMatrix() * q0.toRotationMatrix();
     Quat q = q0;
     q = kit::remote::iterated("quaternion_step", n, q, omega, h);  // n steps, in the student's program
     const Mat3 got = q.toRotationMatrix();
     INFO("trial " << trial << ": " << n << " steps of h = " << h << " s at omega = " << omega.transpose()
-                  << " rad/s, |q| = " << q.norm() << "\ngot\n" << got << "\nexpected\n" << expected);
+                  << " rad/s, |q| = " << q.norm() << "\ngot\n"
+                  << got << "\nexpected\n"
+                  << expected);
     CHECK(largest_entry(got - expected) <= 1e-11);
     CHECK(std::abs(q.norm() - 1) <= 1e-15);
   }

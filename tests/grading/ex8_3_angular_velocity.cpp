@@ -5,15 +5,15 @@
 #include <kit_catch.hpp>
 
 #include "cases.hpp"
-#include "rigid_cases.hpp"
 #include "rigid_angular_velocity.hpp"
+#include "rigid_cases.hpp"
 
 namespace {
-using kit::test::random_vector;
-using kit::test::random_rotation;
-using kit::test::random_matrix;
 using kit::Mat3;
 using kit::Vec3;
+using kit::test::random_matrix;
+using kit::test::random_rotation;
+using kit::test::random_vector;
 
 /// A body's inertia about its centre of mass and its inverse, both in body axes: principal
 /// moments over three decades [kg·m²], about principal axes turned from the body axes.
@@ -46,8 +46,9 @@ Sums literal_formula(const Mat3& r, const Mat3& inverse, const Vec3& l) {
 }
 }  // namespace
 
-TEST_CASE("ex 8.3: ω is literally R I⁻¹ Rᵀ L, for rotations and for R that are not (transposed, not inverted)",
-          "[grade][08-rigid-bodies][ex8.3]") {
+TEST_CASE(
+    "ex 8.3: ω is literally R I⁻¹ Rᵀ L, for rotations and for R that are not (transposed, not inverted)",
+    "[grade][08-rigid-bodies][ex8.3]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 300; ++trial) {
     // Half the trials with a rotation, half with any matrix: there Rᵀ ≠ R⁻¹, and the lecture's
@@ -57,15 +58,18 @@ TEST_CASE("ex 8.3: ω is literally R I⁻¹ Rᵀ L, for rotations and for R that
     const Vec3 l = random_vector(rng, 10);
     const Sums expected = literal_formula(r, body.inverse, l);
     const Vec3 got = kit::angular_velocity(r, body.inverse, l);
-    INFO("trial " << trial << ": L = " << l.transpose() << " kg·m²/s\nR =\n" << r << "\nI_body⁻¹ =\n" << body.inverse
-                  << "\ngot      " << got.transpose() << "\nexpected " << expected.value.transpose());
+    INFO("trial " << trial << ": L = " << l.transpose() << " kg·m²/s\nR =\n"
+                  << r << "\nI_body⁻¹ =\n"
+                  << body.inverse << "\ngot      " << got.transpose() << "\nexpected "
+                  << expected.value.transpose());
     // Rᵀ I⁻¹ R, I in place of I⁻¹, or R⁻¹ in place of Rᵀ all miss by the size of ω itself.
     for (int i = 0; i < 3; ++i) CHECK(std::abs(got[i] - expected.value[i]) <= 1e-14 * expected.size[i]);
   }
 }
 
-TEST_CASE("ex 8.3: for a rotation, ω solves I(t) ω = L with I(t) = R I_body Rᵀ, and ω·L = (RᵀL)ᵀ I⁻¹ (RᵀL) > 0",
-          "[grade][08-rigid-bodies][ex8.3]") {
+TEST_CASE(
+    "ex 8.3: for a rotation, ω solves I(t) ω = L with I(t) = R I_body Rᵀ, and ω·L = (RᵀL)ᵀ I⁻¹ (RᵀL) > 0",
+    "[grade][08-rigid-bodies][ex8.3]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 300; ++trial) {
     const Mat3 r = random_rotation(rng);

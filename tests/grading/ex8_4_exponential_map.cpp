@@ -10,10 +10,10 @@
 #include "rigid_exponential_map.hpp"
 
 namespace {
-using kit::test::random_rotation;
-using kit::test::largest_entry;
 using kit::Mat3;
 using kit::Vec3;
+using kit::test::largest_entry;
+using kit::test::random_rotation;
 
 /// A direction drawn uniformly on the sphere.
 Vec3 random_direction(std::mt19937_64& rng) {
@@ -34,13 +34,16 @@ TEST_CASE("ex 8.4: one step is AngleAxis(h|ω|, ω/|ω|) R, on the left, for θ 
   for (int trial = 0; trial < 300; ++trial) {
     const Mat3 r = random_rotation(rng);
     const Vec3 axis = random_direction(rng);
-    const double speed = std::pow(10.0, kit::test::uniform(rng, -1, 2));              // |ω| [rad/s]
+    const double speed = std::pow(10.0, kit::test::uniform(rng, -1, 2));                    // |ω| [rad/s]
     const double h = std::pow(10.0, kit::test::uniform(rng, -6, std::log10(3.0))) / speed;  // θ = h|ω|
     const Vec3 omega = speed * axis;
     const Mat3 expected = turn(h * omega.norm(), omega.normalized()) * r;
     const Mat3 got = kit::exponential_map_step(r, omega, h);
     INFO("trial " << trial << ": theta = h|omega| = " << h * omega.norm() << " rad about " << axis.transpose()
-                  << "\nR =\n" << r << "\ngot\n" << got << "\nexpected\n" << expected);
+                  << "\nR =\n"
+                  << r << "\ngot\n"
+                  << got << "\nexpected\n"
+                  << expected);
     // R exp(h ω*) (turning about the body axis ω instead of the world one) misses by O(θ).
     CHECK(largest_entry(got - expected) <= 2e-15);
     // One step adds only round-off to RᵀR − I (the random R itself is a few 1e-16 off SO(3)).
@@ -64,7 +67,9 @@ TEST_CASE("ex 8.4: at constant ω, 1e5 steps stay on the rotations (|RᵀR − I
     const double angle = std::remainder(double(n) * (h * speed), 2 * std::acos(-1.0));
     const Mat3 expected = turn(angle, axis) * r0;
     INFO("trial " << trial << ": theta = " << h * speed << " rad a step, |RᵀR − I| = " << orthonormality(r)
-                  << ", det R = " << r.determinant() << "\ngot\n" << r << "\nexpected\n" << expected);
+                  << ", det R = " << r.determinant() << "\ngot\n"
+                  << r << "\nexpected\n"
+                  << expected);
     // A product of rotations is a rotation: the only drift is round-off, about 1e-16 a step (the
     // reference ends within 3e-11), where explicit Euler on R grows by (1 + θ²)^(n/2) and a
     // truncated series (I + θ n* + θ²/2 n*², say) by θ⁴/4 a step, 2.5e-9 or more.
@@ -74,14 +79,18 @@ TEST_CASE("ex 8.4: at constant ω, 1e5 steps stay on the rotations (|RᵀR − I
   }
 }
 
-TEST_CASE("ex 8.4: ω = 0 or h = 0 return R exactly, with no NaN from ω/|ω|", "[grade][08-rigid-bodies][ex8.4]") {
+TEST_CASE("ex 8.4: ω = 0 or h = 0 return R exactly, with no NaN from ω/|ω|",
+          "[grade][08-rigid-bodies][ex8.4]") {
   auto rng = kit::test::random_engine();
   for (int trial = 0; trial < 20; ++trial) {
     const Mat3 r = random_rotation(rng);
     const Vec3 omega = 5 * random_direction(rng);
     const Mat3 still = kit::exponential_map_step(r, Vec3::Zero(), 0.01);
     const Mat3 no_time = kit::exponential_map_step(r, omega, 0.0);
-    INFO("trial " << trial << ": omega = 0 gives\n" << still << "\nh = 0 gives\n" << no_time << "\nR =\n" << r);
+    INFO("trial " << trial << ": omega = 0 gives\n"
+                  << still << "\nh = 0 gives\n"
+                  << no_time << "\nR =\n"
+                  << r);
     CHECK(still.allFinite());
     CHECK(largest_entry(still - r) == 0);
     CHECK(no_time.allFinite());
@@ -103,7 +112,8 @@ TEST_CASE("ex 8.4: tiny turns are accurate: θ = 1e-12 to 1e-8 rad gives R + θ 
     for (int c = 0; c < 3; ++c) expected.col(c) = r.col(c) + theta * axis.cross(r.col(c));
     const Mat3 got = kit::exponential_map_step(r, speed * axis, theta / speed);
     INFO("trial " << trial << ": theta = " << theta << " rad, |omega| = " << speed << " rad/s\ngot − R\n"
-                  << got - r << "\nexpected θ n* R\n" << expected - r);
+                  << got - r << "\nexpected θ n* R\n"
+                  << expected - r);
     // Returning R below some threshold misses by about θ: 1e-12 is a thousand times the tolerance.
     CHECK(got.allFinite());
     CHECK(largest_entry(got - expected) <= 1e-15);

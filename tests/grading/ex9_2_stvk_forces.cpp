@@ -10,9 +10,9 @@
 
 namespace {
 using kit::ElementForces;
-using kit::Vec3;
 using kit::Matrix2;
 using kit::Matrix32;
+using kit::Vec3;
 using kit::test::describe;
 using kit::test::random_element;
 }  // namespace
@@ -24,10 +24,13 @@ TEST_CASE("ex 9.2: S is λ tr(E) I + 2μ E, entry by entry", "[grade][09-continu
     E(0, 0) = kit::test::uniform(rng, -0.5, 0.5);
     E(1, 1) = kit::test::uniform(rng, -0.5, 0.5);
     E(0, 1) = E(1, 0) = kit::test::uniform(rng, -0.5, 0.5);
-    const kit::Lame lame{std::pow(10.0, kit::test::uniform(rng, 3, 8)), std::pow(10.0, kit::test::uniform(rng, 3, 8))};
+    const kit::Lame lame{std::pow(10.0, kit::test::uniform(rng, 3, 8)),
+                         std::pow(10.0, kit::test::uniform(rng, 3, 8))};
     const Matrix2 S = kit::stvk_stress(E, lame);
     const double trace = E(0, 0) + E(1, 1);
-    INFO("trial " << trial << ": E =\n" << E << "\nlambda = " << lame.lambda << ", mu = " << lame.mu << "\nS =\n" << S);
+    INFO("trial " << trial << ": E =\n"
+                  << E << "\nlambda = " << lame.lambda << ", mu = " << lame.mu << "\nS =\n"
+                  << S);
     const double size = (std::abs(lame.lambda) + 2 * lame.mu) * E.cwiseAbs().maxCoeff();
     CHECK(std::abs(S(0, 0) - (lame.lambda * trace + 2 * lame.mu * E(0, 0))) <= 1e-14 * size);
     CHECK(std::abs(S(1, 1) - (lame.lambda * trace + 2 * lame.mu * E(1, 1))) <= 1e-14 * size);
@@ -74,7 +77,8 @@ TEST_CASE("ex 9.2: no net force and no net moment; none at rest or under a rigid
   }
 }
 
-TEST_CASE("ex 9.2: closed form: a unit square's lower triangle stretched along x", "[grade][09-continuum][ex9.2]") {
+TEST_CASE("ex 9.2: closed form: a unit square's lower triangle stretched along x",
+          "[grade][09-continuum][ex9.2]") {
   // Rest (0,0) (1,0) (0,1), thickness 0.01 m, so V = 0.005 m³ and Dm = I. Stretch x by a:
   // E = diag((a² − 1)/2, 0), S = diag((λ + 2μ) E_xx, λ E_xx), P = F S = diag(a S_xx, S_yy, 0)
   // and H = −V P: node 1 pulled back by V a S_xx along x, node 2 by V S_yy along y.

@@ -8,8 +8,8 @@
 #include "fem_stvk_stiffness.hpp"
 
 namespace {
-using kit::Vec3;
 using kit::Matrix9;
+using kit::Vec3;
 using kit::Vector9;
 using kit::test::describe;
 using kit::test::random_element;
@@ -79,7 +79,8 @@ TEST_CASE("ex 9.3: symmetric, blind to translations, and at rest blind to small 
   }
 }
 
-TEST_CASE("ex 9.3: closed form at rest: the unit right triangle's in-plane stiffness", "[grade][09-continuum][ex9.3]") {
+TEST_CASE("ex 9.3: closed form at rest: the unit right triangle's in-plane stiffness",
+          "[grade][09-continuum][ex9.3]") {
   // At F = [I; 0] the stiffness is the linear element's: pulling node 1 along x by dx strains
   // E_xx = dx (Dm = I), so the force on node 1 is −V (λ + 2μ) dx along x and on node 2 −V λ dx along y;
   // out of the plane a flat unstressed membrane has no stiffness at all.

@@ -22,8 +22,8 @@ struct RandomElement {
   std::array<Eigen::Vector2d, 3> rest_nodes;  ///< X0, X1, X2 [m], counter-clockwise
   RestTriangle rest;
   std::array<Vec3, 3> nodes;  ///< x0, x1, x2 [m]
-  Matrix32 F;                       ///< the deformation gradient they were made with
-  Lame lame;                        ///< [Pa]
+  Matrix32 F;                 ///< the deformation gradient they were made with
+  Lame lame;                  ///< [Pa]
 };
 
 /// A rotation of space drawn uniformly.
@@ -46,9 +46,11 @@ inline RandomElement random_element(std::mt19937_64& rng, double strain_size = 0
   for (int i = 0; i < 3; ++i) {
     const double corner = 2 * M_PI * i / 3;
     const Eigen::Vector2d jitter(uniform(rng, -0.15, 0.15), uniform(rng, -0.15, 0.15));
-    e.rest_nodes[i] = origin + size * (in_plane * (Eigen::Vector2d(std::cos(corner), std::sin(corner)) + jitter));
+    e.rest_nodes[i] =
+        origin + size * (in_plane * (Eigen::Vector2d(std::cos(corner), std::sin(corner)) + jitter));
   }
-  e.rest = rest_triangle(e.rest_nodes[0], e.rest_nodes[1], e.rest_nodes[2], std::pow(10.0, uniform(rng, -3, -2)));
+  e.rest =
+      rest_triangle(e.rest_nodes[0], e.rest_nodes[1], e.rest_nodes[2], std::pow(10.0, uniform(rng, -3, -2)));
   Matrix2 strain;
   strain(0, 0) = uniform(rng, -strain_size, strain_size);
   strain(1, 1) = uniform(rng, -strain_size, strain_size);

@@ -58,7 +58,8 @@ using ListenerBase = Catch::TestEventListenerBase;
 struct EvidenceListener : ListenerBase {
   using ListenerBase::ListenerBase;
   void testCaseEnded(const Catch::TestCaseStats& stats) override {
-    emit("case\t" + one_line(kit::testing::case_name(stats)) + "\t" + std::to_string(stats.totals.assertions.passed) + "\t" +
+    emit("case\t" + one_line(kit::testing::case_name(stats)) + "\t" +
+         std::to_string(stats.totals.assertions.passed) + "\t" +
          std::to_string(stats.totals.assertions.failed) + "\n");
   }
   void testRunEnded(const Catch::TestRunStats& stats) override {

@@ -22,7 +22,8 @@ struct ChapterRun {
 
 /// Runs `binary` with exactly `args` (which ask for --json), requires `expected_exit` with its
 /// stderr shown when it differs, and parses stdout. The overloads below add the usual flags.
-inline ChapterRun run_chapter(const std::string& binary, const std::vector<std::string>& args, int expected_exit = 0) {
+inline ChapterRun run_chapter(const std::string& binary, const std::vector<std::string>& args,
+                              int expected_exit = 0) {
   ChapterRun run{run_process(binary, args), {}};
   INFO(run.process.err);
   REQUIRE(run.process.exit_code == expected_exit);
@@ -32,8 +33,8 @@ inline ChapterRun run_chapter(const std::string& binary, const std::vector<std::
 
 /// For the numbers alone: `args` then --json --no-plot --out into a temporary folder named after
 /// `tag`, removed on return, so no figure is drawn and no file is left.
-inline nlohmann::json run_chapter_json(const std::string& binary, std::vector<std::string> args, const std::string& tag,
-                                       int expected_exit = 0) {
+inline nlohmann::json run_chapter_json(const std::string& binary, std::vector<std::string> args,
+                                       const std::string& tag, int expected_exit = 0) {
   TempDir out(tag);
   args.insert(args.end(), {"--json", "--no-plot", "--out", out.path().string()});
   return run_chapter(binary, args, expected_exit).summary;

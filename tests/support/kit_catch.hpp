@@ -31,7 +31,9 @@ namespace kit::testing {
 // The run's --rng-seed: graded inputs are drawn from it, so a batch's seed fixes them.
 inline std::uint32_t seed() { return Catch::getSeed(); }
 template <class CaseStats>
-const std::string& case_name(const CaseStats& stats) { return stats.testInfo->name; }
+const std::string& case_name(const CaseStats& stats) {
+  return stats.testInfo->name;
+}
 }  // namespace kit::testing
 
 #else
@@ -51,7 +53,9 @@ inline StdString::ContainsMatcher ContainsSubstring(const std::string& text,
 namespace kit::testing {
 inline std::uint32_t seed() { return Catch::rngSeed(); }
 template <class CaseStats>
-const std::string& case_name(const CaseStats& stats) { return stats.testInfo.name; }
+const std::string& case_name(const CaseStats& stats) {
+  return stats.testInfo.name;
+}
 }  // namespace kit::testing
 
 #endif

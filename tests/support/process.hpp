@@ -26,7 +26,8 @@ inline std::string shell_quote(const std::string& word) {
 
 /// Runs `program args...` through /bin/sh, without a display, and waits for it.
 inline ProcessResult run_process(const std::string& program, const std::vector<std::string>& args) {
-  const auto err_file = std::filesystem::temp_directory_path() / ("kit-test-stderr-" + std::to_string(::getpid()));
+  const auto err_file =
+      std::filesystem::temp_directory_path() / ("kit-test-stderr-" + std::to_string(::getpid()));
   // Appends only: `"literal" + std::string` trips GCC 12's false -Wrestrict at -O3 (PR 105651).
   std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY ";
   command += shell_quote(program);
@@ -56,7 +57,8 @@ inline ProcessResult run_process(const std::string& program, const std::vector<s
 class TempDir {
  public:
   explicit TempDir(const std::string& tag) {
-    path_ = std::filesystem::temp_directory_path() / ("kit-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
+    path_ = std::filesystem::temp_directory_path() /
+            ("kit-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }

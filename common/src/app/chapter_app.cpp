@@ -8,8 +8,8 @@
 
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <kit/base/atomic_file.hpp>
 #include <kit/base/whole_number.hpp>
@@ -42,7 +42,8 @@ class ClearingBuffer : public std::streambuf {
 }  // namespace
 
 // A refusal naming `flag` and its `value` unless this process may create files in `folder`.
-void require_writable(const std::string& flag, const std::string& value, const std::filesystem::path& folder) {
+void require_writable(const std::string& flag, const std::string& value,
+                      const std::filesystem::path& folder) {
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
     throw UsageError(fmt::format("{} '{}': {} is not writable", flag, value, folder.string()));
 }
@@ -120,8 +121,14 @@ void ChapterApp::add_real(const std::string& flag, double& value, const std::str
       ->type_name("REAL");
   const std::string key = flag.substr(flag.find_first_not_of('-'));
   record_parameters_.push_back([this, key, &value] { summary_["parameters"][key] = value; });
-  flag_table_.push_back({{"flag", flag}, {"kind", "real"}, {"default", value}, {"lo", range.lo}, {"hi", range.hi},
-                         {"lo_open", range.lo_open}, {"hi_open", range.hi_open}, {"nonzero", range.nonzero}});
+  flag_table_.push_back({{"flag", flag},
+                         {"kind", "real"},
+                         {"default", value},
+                         {"lo", range.lo},
+                         {"hi", range.hi},
+                         {"lo_open", range.lo_open},
+                         {"hi_open", range.hi_open},
+                         {"nonzero", range.nonzero}});
 }
 
 void ChapterApp::add_choice(const std::string& flag, std::string& value, const std::string& help,
@@ -136,14 +143,19 @@ void ChapterApp::add_count(const std::string& flag, long& value, const std::stri
     const WholeNumberText read = read_whole_number(input);
     const std::string expected = fmt::format("expected a whole number in [{}, {}]", lo, hi);
     switch (read.kind) {
-      case Kind::not_a_number: return fmt::format("value {} is not a number; {}", input, expected);
-      case Kind::not_whole: return fmt::format("value {} is not a whole number; {}", input, expected);
+      case Kind::not_a_number:
+        return fmt::format("value {} is not a number; {}", input, expected);
+      case Kind::not_whole:
+        return fmt::format("value {} is not a whole number; {}", input, expected);
       case Kind::leading_zero:
         return fmt::format("value {} starts with 0, which some tools read as octal; {}", input, expected);
-      case Kind::too_large: return fmt::format("value {} is out of range; {}", input, expected);
-      case Kind::whole: break;
+      case Kind::too_large:
+        return fmt::format("value {} is out of range; {}", input, expected);
+      case Kind::whole:
+        break;
     }
-    if (read.value < lo || read.value > hi) return fmt::format("value {} is out of range; {}", input, expected);
+    if (read.value < lo || read.value > hi)
+      return fmt::format("value {} is out of range; {}", input, expected);
     input = fmt::format("{}", read.value);  // CLI11 then reads plain digits: "1e9" arrives as 1000000000
     return {};
   };
@@ -155,20 +167,21 @@ void ChapterApp::add_count(const std::string& flag, long& value, const std::stri
   flag_table_.push_back({{"flag", flag}, {"kind", "count"}, {"default", value}, {"lo", lo}, {"hi", hi}});
 }
 
-std::ostream& ChapterApp::text() {
-  return (options_.json || options_.quiet) ? null_ : stdout_;
-}
+std::ostream& ChapterApp::text() { return (options_.json || options_.quiet) ? null_ : stdout_; }
 
 void ChapterApp::figure(const Figure& fig) {
   if (options_.no_plot) return;
   // A figure with no data at all (every method it draws waits for its exercise) is not drawn:
   // the text says so, and the summary lists it under "figures_waiting".
   const auto has_data = [](const Panel& panel) {
-    return std::any_of(panel.series.begin(), panel.series.end(), [](const Series& s) { return !s.x.empty(); });
+    return std::any_of(panel.series.begin(), panel.series.end(),
+                       [](const Series& s) { return !s.x.empty(); });
   };
   if (std::none_of(fig.panels.begin(), fig.panels.end(), has_data)) {
-    report_.print(fmt::format("[skipped] figure {}: no data to draw (its methods wait for their exercises, or the "
-                              "run gave none)\n", fig.name));
+    report_.print(
+        fmt::format("[skipped] figure {}: no data to draw (its methods wait for their exercises, or the "
+                    "run gave none)\n",
+                    fig.name));
     summary_["figures_waiting"].push_back(fig.name);
     return;
   }
@@ -184,13 +197,15 @@ void ChapterApp::figure(const Figure& fig) {
 
 void ChapterApp::add_divergence_flag() {
   app_->add_flag("--fail-on-divergence", options_.fail_on_divergence,
-                "exit with code 3 when a simulation diverged (it is reported either way)");
+                 "exit with code 3 when a simulation diverged (it is reported either way)");
 }
 
 void ChapterApp::add_quick_flag(const std::string& sizes) {
-  app_->add_flag("--quick", options_.quick,
-                fmt::format("the lecture's experiments at reduced sizes ({}): a first look in a fraction of the "
-                            "time; the README's numbers are those of the full run", sizes));
+  app_->add_flag(
+      "--quick", options_.quick,
+      fmt::format("the lecture's experiments at reduced sizes ({}): a first look in a fraction of the "
+                  "time; the README's numbers are those of the full run",
+                  sizes));
   record_parameters_.push_back([this] { summary_["parameters"]["quick"] = options_.quick; });
 }
 

@@ -11,8 +11,8 @@ namespace kit {
 
 Series& Panel::add(Series s) {
   if (s.x.size() != s.y.size())
-    throw std::invalid_argument(fmt::format("series '{}' has {} x and {} y values", s.title,
-                                            s.x.size(), s.y.size()));
+    throw std::invalid_argument(
+        fmt::format("series '{}' has {} x and {} y values", s.title, s.x.size(), s.y.size()));
   series.push_back(std::move(s));
   return series.back();
 }
@@ -53,7 +53,8 @@ std::vector<std::size_t> plotted_indices(const Series& s) {
       kept.push_back(begin);  // an undefined stretch stays a gap
       continue;
     }
-    std::array<std::size_t, 4> extremes{first, first, first, first};  // lowest y, highest y, lowest x, highest x
+    std::array<std::size_t, 4> extremes{first, first, first,
+                                        first};  // lowest y, highest y, lowest x, highest x
     for (std::size_t i = first; i < end; ++i) {
       if (s.y[i] < s.y[extremes[0]]) extremes[0] = i;
       if (s.y[i] > s.y[extremes[1]]) extremes[1] = i;
@@ -71,10 +72,10 @@ std::vector<std::size_t> plotted_indices(const Series& s) {
 bool drawable(const Series& s, bool logx, bool logy) {
   const auto on_log_axis = [](double v) { return v >= log_axis_min && v <= log_axis_max; };
   for (std::size_t i = 0; i < s.x.size(); ++i)
-    if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && (!logx || on_log_axis(s.x[i])) && (!logy || on_log_axis(s.y[i])))
+    if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && (!logx || on_log_axis(s.x[i])) &&
+        (!logy || on_log_axis(s.y[i])))
       return true;
   return false;
 }
-
 
 }  // namespace kit

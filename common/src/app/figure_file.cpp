@@ -60,8 +60,9 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
         // draw onto it instead.
         Gnuplot gp(fmt::format("cd {} && gnuplot >/dev/null 2>{}", shell_quoted(dir.string()),
                                shell_quoted(log.string())));
-        gp << "fmt = " << gnuplot_string(format) << "; out = "
-           << gnuplot_string((scratch.path().filename() / temporary.filename()).string()) << "\n"
+        gp << "fmt = " << gnuplot_string(format)
+           << "; out = " << gnuplot_string((scratch.path().filename() / temporary.filename()).string())
+           << "\n"
            << "load " << gnuplot_string(figure.name + ".gp") << "\n";
       }  // the destructor waits for gnuplot to finish
       const std::string messages = read_file(log);
@@ -73,7 +74,8 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
       if (format == "pdf") pin_pdf_creation_date(temporary);
       commit_file(temporary, final_path);
       result.files.push_back(final_path);
-      if (!messages.empty()) result.notes.push_back(fmt::format("gnuplot on {}: {}", final_path.filename().string(), messages));
+      if (!messages.empty())
+        result.notes.push_back(fmt::format("gnuplot on {}: {}", final_path.filename().string(), messages));
     }
   }
   if (options.show) {
@@ -86,6 +88,5 @@ FigureFiles write_figure(const Figure& figure, const FigureOptions& options) {
   }
   return result;
 }
-
 
 }  // namespace kit

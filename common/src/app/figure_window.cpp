@@ -33,7 +33,8 @@ bool gnuplot_has_window_terminal() {
 
 std::optional<std::string> window_unavailable() {
   if (!has_display()) return "no display (DISPLAY is unset)";
-  if (!gnuplot_has_window_terminal()) return "this gnuplot has no window terminal (gnuplot-nox); install gnuplot-qt to see windows";
+  if (!gnuplot_has_window_terminal())
+    return "this gnuplot has no window terminal (gnuplot-nox); install gnuplot-qt to see windows";
   return std::nullopt;
 }
 

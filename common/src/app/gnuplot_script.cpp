@@ -19,8 +19,8 @@ std::string comment_line(const std::string& text) {
 }
 
 // `text` on two lines when it is longer than `width` characters: broken at the ", ", ": " or
-// " (" nearest its middle, else at the space nearest it. A long axis label otherwise runs off a short panel, and a long title
-// off a narrow figure, once the figure is drawn at the size of its slide.
+// " (" nearest its middle, else at the space nearest it. A long axis label otherwise runs off a short panel,
+// and a long title off a narrow figure, once the figure is drawn at the size of its slide.
 std::string wrapped(const std::string& text, std::size_t width) {
   std::size_t characters = 0;  // UTF-8: count the bytes that start a character
   for (unsigned char c : text) characters += (c & 0xC0) != 0x80;
@@ -37,7 +37,8 @@ std::string wrapped(const std::string& text, std::size_t width) {
   for (auto at = text.find(' '); best == std::string::npos && at != std::string::npos;) {
     std::size_t nearest = at;  // the first space; then the one nearest the middle
     for (; at != std::string::npos; at = text.find(' ', at + 1))
-      if ((at > middle ? at - middle : middle - at) < (nearest > middle ? nearest - middle : middle - nearest))
+      if ((at > middle ? at - middle : middle - at) <
+          (nearest > middle ? nearest - middle : middle - nearest))
         nearest = at;
     best = nearest;
   }
@@ -60,8 +61,8 @@ std::string figure_data_text(const Figure& figure) {
   int index = 0;
   for (const auto& panel : figure.panels) {
     for (const auto& s : panel.series) {
-      out << "\n\n# index " << index++ << ": " << (s.title.empty() ? "(no legend entry)" : s.title)
-          << "  [" << panel.xlabel << " | " << panel.ylabel << "]\n";
+      out << "\n\n# index " << index++ << ": " << (s.title.empty() ? "(no legend entry)" : s.title) << "  ["
+          << panel.xlabel << " | " << panel.ylabel << "]\n";
       for (std::size_t i : plotted_indices(s)) out << number(s.x[i]) << ' ' << number(s.y[i]) << '\n';
       if (s.x.empty()) out << "NaN NaN\n";  // an empty block would shift every later index
     }
@@ -71,9 +72,10 @@ std::string figure_data_text(const Figure& figure) {
 
 std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
   std::ostringstream gp;
-  gp << comment_line(figure.title)
-     << "# Draws " << figure.name << " from " << data_file << ". Restyle freely, then redraw from this folder:\n"
-     << "#   gnuplot -e \"fmt='pdf'\" " << figure.name << ".gp     (fmt: pdf, png, svg; or 'show' for a window)\n"
+  gp << comment_line(figure.title) << "# Draws " << figure.name << " from " << data_file
+     << ". Restyle freely, then redraw from this folder:\n"
+     << "#   gnuplot -e \"fmt='pdf'\" " << figure.name
+     << ".gp     (fmt: pdf, png, svg; or 'show' for a window)\n"
      << "if (!exists(\"fmt\")) fmt = \"png\"\n"
      << "if (!exists(\"out\")) out = \"" << figure.name << ".\" . fmt\n"
      << "# The PDF's size [in] and text size [pt]: a slide build sets them to the slot its deck gives\n"
@@ -83,18 +85,23 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
      << "if (!exists(\"font_pt\")) font_pt = 11\n"
      << "if (fmt eq \"pdf\") { eval sprintf(\"set terminal pdfcairo enhanced color size %gin,%gin "
         "font 'Sans,%g' linewidth 1.5\", width_in, height_in, font_pt) }\n"
-     << fmt::format("if (fmt eq \"png\") {{ set terminal pngcairo enhanced color size {},{} font \"Sans,10\" linewidth 1.5 }}\n",
+     << fmt::format("if (fmt eq \"png\") {{ set terminal pngcairo enhanced color size {},{} font \"Sans,10\" "
+                    "linewidth 1.5 }}\n",
                     static_cast<int>(figure.width_in * 150), static_cast<int>(figure.height_in * 150))
-     << fmt::format("if (fmt eq \"svg\") {{ set terminal svg enhanced size {},{} font \"Sans,10\" linewidth 1.5 background \"white\" }}\n",
+     << fmt::format("if (fmt eq \"svg\") {{ set terminal svg enhanced size {},{} font \"Sans,10\" linewidth "
+                    "1.5 background \"white\" }}\n",
                     static_cast<int>(figure.width_in * 110), static_cast<int>(figure.height_in * 110))
      << "if (fmt ne \"show\") { set output out }\n"
      << "set encoding utf8\n"
      << "data = " << gnuplot_string(data_file) << "\n";
   const bool multi = figure.panels.size() > 1;
-  if (multi) gp << "set multiplot title " << gnuplot_string(wrapped(figure.title, 80)) << " font sprintf(\",%g\", font_pt)\n";
+  if (multi)
+    gp << "set multiplot title " << gnuplot_string(wrapped(figure.title, 80))
+       << " font sprintf(\",%g\", font_pt)\n";
   int index = 0;
   const int columns = std::max(1, figure.columns);
-  const int rows = static_cast<int>((figure.panels.size() + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
+  const int rows = static_cast<int>((figure.panels.size() + static_cast<std::size_t>(columns) - 1) /
+                                    static_cast<std::size_t>(columns));
   const double cell_height = 0.92 / rows, cell_width = 1.0 / columns;
   for (std::size_t p = 0; p < figure.panels.size(); ++p) {
     const Panel& panel = figure.panels[p];
@@ -106,7 +113,8 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
           cell_width * column, 0.92 - cell_height * (row + 1), cell_width, cell_height});
       gp << fmt::format("set origin {},{}\nset size {},{}\n", place[0], place[1], place[2], place[3]);
     }
-    const std::string title = multi ? panel.title : (panel.title.empty() ? figure.title : figure.title + "\n" + panel.title);
+    const std::string title =
+        multi ? panel.title : (panel.title.empty() ? figure.title : figure.title + "\n" + panel.title);
     gp << "set title " << gnuplot_string(wrapped(title, 72)) << "\n"
        << "set xlabel " << gnuplot_string(wrapped(panel.xlabel, 80)) << "\n"
        << "set ylabel " << gnuplot_string(wrapped(panel.ylabel, rows > 1 ? 24 : 34)) << "\n"
@@ -131,15 +139,18 @@ std::string gnuplot_script(const Figure& figure, const std::string& data_file) {
         if (!series.title.empty() && !series.x.empty()) empty.push_back(series.title);
         continue;
       }
-      clauses.push_back(fmt::format("data index {} using {}:{} with {}{} {}", block, x, y, series.with,
-                                    series.style.empty() ? "" : " " + series.style,
-                                    series.title.empty() ? "notitle" : "title " + gnuplot_string(series.title)));
+      clauses.push_back(
+          fmt::format("data index {} using {}:{} with {}{} {}", block, x, y, series.with,
+                      series.style.empty() ? "" : " " + series.style,
+                      series.title.empty() ? "notitle" : "title " + gnuplot_string(series.title)));
     }
     if (!empty.empty()) {
       std::string names;
       for (const auto& name : empty) names += (names.empty() ? "" : ", ") + name;
-      gp << "set label " << gnuplot_string("nothing to draw" + std::string(panel.logy || panel.logx ? " on a log scale" : "") +
-                                   ": " + names) << " at graph 0.02, graph 0.04 left front font \",9\"\n";
+      gp << "set label "
+         << gnuplot_string("nothing to draw" +
+                           std::string(panel.logy || panel.logx ? " on a log scale" : "") + ": " + names)
+         << " at graph 0.02, graph 0.04 left front font \",9\"\n";
     }
     if (clauses.empty()) {  // nothing at all: the axes, the label, and an invisible line
       gp << "unset logscale\nset xrange [0:1]\nset yrange [0:1]\nplot -1 notitle\n";

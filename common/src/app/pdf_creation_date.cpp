@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include <fmt/format.h>
 #include <boost/iostreams/device/back_inserter.hpp>
 #include <boost/iostreams/filter/zlib.hpp>
 #include <boost/iostreams/filtering_stream.hpp>
-#include <fmt/format.h>
 
 namespace kit {
 
@@ -31,8 +31,10 @@ bool set_date(std::string& text, std::size_t start, long long epoch) {
   const std::string stamp = fmt::format("{:04}{:02}{:02}{:02}{:02}{:02}", utc.tm_year + 1900, utc.tm_mon + 1,
                                         utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec);
   const std::size_t length = close - start;
-  const std::string date = length == 15 ? stamp + "Z" : length == 20 ? stamp + "+00'00"
-                           : length == 21 ? stamp + "+00'00'" : "";
+  const std::string date = length == 15   ? stamp + "Z"
+                           : length == 20 ? stamp + "+00'00"
+                           : length == 21 ? stamp + "+00'00'"
+                                          : "";
   if (date.empty()) return false;
   text.replace(start, length, date);
   return true;
@@ -93,7 +95,8 @@ std::size_t moved(std::size_t offset, const std::vector<Edit>& edits) {
 }
 
 std::string apply(std::string pdf, std::vector<Edit> edits) {
-  std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.at > b.at; });  // back to front
+  std::sort(edits.begin(), edits.end(),
+            [](const Edit& a, const Edit& b) { return a.at > b.at; });  // back to front
   for (const Edit& e : edits) pdf.replace(e.at, e.old_size, e.text);
   return pdf;
 }
@@ -101,7 +104,8 @@ std::string apply(std::string pdf, std::vector<Edit> edits) {
 // The object stream `objects` gets `data` (compressed): its bytes and its /Length change, and the
 // cross-reference stream (cairo 1.18 writes one, /W [a b c], no predictor) moves every offset
 // behind them, as does startxref.
-std::optional<std::string> replace_stream(const std::string& pdf, const StreamObject& objects, std::string data) {
+std::optional<std::string> replace_stream(const std::string& pdf, const StreamObject& objects,
+                                          std::string data) {
   std::vector<Edit> edits{{objects.data, objects.length, data},
                           {objects.length_at, objects.length_digits, std::to_string(data.size())}};
   const auto startxref = pdf.rfind("startxref");
@@ -114,8 +118,9 @@ std::optional<std::string> replace_stream(const std::string& pdf, const StreamOb
   const std::string dictionary = pdf.substr(xref->dictionary, xref->dictionary_end - xref->dictionary);
   static const std::regex widths(R"(/W \[(\d) (\d) (\d)\])");
   std::smatch w;
-  if (dictionary.find("/Type /XRef") == std::string::npos || dictionary.find("/DecodeParms") != std::string::npos ||
-      !std::regex_search(dictionary, w, widths) || xref->length_at < xref->dictionary || xref->length_at > xref->data)
+  if (dictionary.find("/Type /XRef") == std::string::npos ||
+      dictionary.find("/DecodeParms") != std::string::npos || !std::regex_search(dictionary, w, widths) ||
+      xref->length_at < xref->dictionary || xref->length_at > xref->data)
     return std::nullopt;  // not the cross-reference stream cairo writes
   const std::size_t type_width = std::stoul(w[1].str()), offset_width = std::stoul(w[2].str());
   const std::size_t row = type_width + offset_width + std::stoul(w[3].str());
@@ -124,12 +129,14 @@ std::optional<std::string> replace_stream(const std::string& pdf, const StreamOb
   for (std::size_t r = 0; r < table.size(); r += row) {
     auto field = [&](std::size_t at, std::size_t width) {
       std::size_t value = 0;
-      for (std::size_t i = 0; i < width; ++i) value = value << 8 | static_cast<unsigned char>(table[r + at + i]);
+      for (std::size_t i = 0; i < width; ++i)
+        value = value << 8 | static_cast<unsigned char>(table[r + at + i]);
       return value;
     };
     if ((type_width == 0 ? 1 : field(0, type_width)) != 1) continue;  // only type 1 rows hold a byte offset
     std::size_t offset = moved(field(type_width, offset_width), edits);
-    if (offset_width < sizeof(std::size_t) && offset >> (8 * offset_width) != 0) return std::nullopt;  // no room
+    if (offset_width < sizeof(std::size_t) && offset >> (8 * offset_width) != 0)
+      return std::nullopt;  // no room
     for (std::size_t i = offset_width; i-- > 0; offset >>= 8) table[r + type_width + i] = char(offset & 0xff);
   }
   const std::size_t new_xref_offset = moved(xref_offset, edits);
@@ -171,7 +178,8 @@ std::string pdf_deflate(std::string_view plain) {
 std::optional<std::string> with_pdf_creation_date(std::string pdf, long long epoch) {
   // cairo 1.16: the document information in plain text; the date keeps its length.
   if (const auto at = pdf.find(kDateKey); at != std::string::npos)
-    return set_date(pdf, at + kDateKey.size(), epoch) ? std::optional<std::string>(std::move(pdf)) : std::nullopt;
+    return set_date(pdf, at + kDateKey.size(), epoch) ? std::optional<std::string>(std::move(pdf))
+                                                      : std::nullopt;
   // cairo 1.18: in a compressed object stream.
   for (auto at = pdf.find("/Type /ObjStm"); at != std::string::npos; at = pdf.find("/Type /ObjStm", at + 1)) {
     const auto object = pdf.rfind(" obj", at);

@@ -83,7 +83,8 @@ std::string ProgressBar::line(double elapsed) const {
   // Cut to the width, counting characters (a section's name may hold UTF-8), not bytes.
   std::size_t chars = 0, cut = 0;
   for (; cut < text.size(); ++cut) {
-    if ((static_cast<unsigned char>(text[cut]) & 0xC0) != 0x80 && ++chars > std::size_t(settings_.max_width)) break;
+    if ((static_cast<unsigned char>(text[cut]) & 0xC0) != 0x80 && ++chars > std::size_t(settings_.max_width))
+      break;
   }
   return text.substr(0, cut);
 }
@@ -115,9 +116,12 @@ double steady_seconds() {
 
 std::ostream* progress_stream() {
   switch (progress_mode(std::getenv("KIT_PROGRESS"))) {
-    case ProgressMode::always: return &std::cerr;
-    case ProgressMode::never: return nullptr;
-    case ProgressMode::automatic: break;
+    case ProgressMode::always:
+      return &std::cerr;
+    case ProgressMode::never:
+      return nullptr;
+    case ProgressMode::automatic:
+      break;
   }
   return ::isatty(STDERR_FILENO) ? &std::cerr : nullptr;
 }

@@ -17,7 +17,8 @@ std::string format_value(const ReportValue& value, const std::string& format) {
   }
   if (const double* d = std::get_if<double>(&value); d && !std::isfinite(*d))
     return std::isnan(*d) ? "undefined" : (*d > 0 ? "overflow" : "-overflow");  // never "inf" or "-nan"
-  if (const std::string* text = std::get_if<std::string>(&value)) return *text;  // a label ignores number specs
+  if (const std::string* text = std::get_if<std::string>(&value))
+    return *text;  // a label ignores number specs
   return std::visit(
       [&](const auto& v) -> std::string {
         using V = std::decay_t<decltype(v)>;
@@ -62,7 +63,8 @@ ReportTable::ReportTable(std::ostream& text, nlohmann::json& rows, std::vector<C
 
 nlohmann::json ReportTable::record(std::vector<ReportValue> values, bool printed) {
   if (values.size() != columns_.size())
-    throw std::invalid_argument(fmt::format("report row has {} values for {} columns", values.size(), columns_.size()));
+    throw std::invalid_argument(
+        fmt::format("report row has {} values for {} columns", values.size(), columns_.size()));
   nlohmann::json object = nlohmann::json::object();
   std::vector<std::string> cells;
   for (std::size_t i = 0; i < values.size(); ++i) {
@@ -89,7 +91,8 @@ void ReportTable::row(std::string_view name, std::vector<ReportValue> values, bo
   row_at({std::string(name)}, std::move(values), printed);
 }
 
-void ReportTable::row_at(const std::vector<std::string>& path, std::vector<ReportValue> values, bool printed) {
+void ReportTable::row_at(const std::vector<std::string>& path, std::vector<ReportValue> values,
+                         bool printed) {
   nlohmann::json& target = slot(path);
   nlohmann::json object = record(std::move(values), printed);
   if (target.is_object()) {

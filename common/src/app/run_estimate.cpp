@@ -44,15 +44,15 @@ void announce_run(Report& report, std::string_view section, std::string_view wha
     const std::string advice = too_long && too_large ? fmt::format("fewer {} and less memory", e.unit)
                                : too_long            ? fmt::format("fewer {}", e.unit)
                                                      : "less memory";
-    throw UsageError(fmt::format("{} ({}) takes {}, over the limit of {} and {}: choose values that ask for {}",
-                                 what, flags, describe(e), describe_seconds(limits.max_seconds),
-                                 describe_bytes(limits.max_bytes), advice));
+    throw UsageError(fmt::format(
+        "{} ({}) takes {}, over the limit of {} and {}: choose values that ask for {}", what, flags,
+        describe(e), describe_seconds(limits.max_seconds), describe_bytes(limits.max_bytes), advice));
   }
   const bool announced = e.seconds() >= limits.announce_seconds || e.bytes >= limits.announce_bytes;
   const std::string place = std::string(section) + "/estimate";
-  const std::vector<Field> fields{{"steps", e.steps}, {"seconds", e.seconds()}, {"bytes", e.bytes},
-                                  {"announced", announced}, {"what", std::string(what)},
-                                  {"text", describe(e)}};
+  const std::vector<Field> fields{{"steps", e.steps},          {"seconds", e.seconds()},
+                                  {"bytes", e.bytes},          {"announced", announced},
+                                  {"what", std::string(what)}, {"text", describe(e)}};
   if (announced)
     report.say(place, "\n{what} takes {text}.\n", fields);
   else
@@ -60,8 +60,6 @@ void announce_run(Report& report, std::string_view section, std::string_view wha
   ProgressTask::set_total(e.work > 0 ? e.work : e.steps);
 }
 
-double machine_memory() {
-  return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
-}
+double machine_memory() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE)); }
 
 }  // namespace kit

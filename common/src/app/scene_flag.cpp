@@ -22,8 +22,9 @@ std::filesystem::path scene_file(const std::string& value, const std::filesystem
   for (const auto& entry : std::filesystem::directory_iterator(scenes_dir, ec))
     if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
-  throw UsageError(fmt::format("--scene: no scene named '{}'; the shipped scenes are {} (or give a .toml path)",
-                               value, fmt::join(names, ", ")));
+  throw UsageError(
+      fmt::format("--scene: no scene named '{}'; the shipped scenes are {} (or give a .toml path)", value,
+                  fmt::join(names, ", ")));
 }
 
 }  // namespace kit

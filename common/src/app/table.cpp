@@ -10,8 +10,8 @@ namespace kit {
 namespace {
 // Columns on a terminal: count code points, not bytes ("Δt", "✓").
 std::size_t display_width(const std::string& s) {
-  return static_cast<std::size_t>(
-      std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+  return static_cast<std::size_t>(std::count_if(
+      s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
 }
 }  // namespace
 
@@ -19,8 +19,8 @@ Table::Table(std::vector<std::string> headers) : headers_(std::move(headers)) {}
 
 void Table::add_row(std::vector<std::string> cells) {
   if (cells.size() != headers_.size())
-    throw std::invalid_argument(fmt::format("table row has {} cells for {} columns", cells.size(),
-                                            headers_.size()));
+    throw std::invalid_argument(
+        fmt::format("table row has {} cells for {} columns", cells.size(), headers_.size()));
   rows_.push_back(std::move(cells));
 }
 

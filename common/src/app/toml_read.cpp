@@ -14,16 +14,26 @@ namespace kit::scene_toml {
 
 std::string_view kind(const toml::node& n) {
   switch (n.type()) {
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a floating-point number";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::table: return "a table";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
-    default: return "nothing";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a floating-point number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
+    default:
+      return "nothing";
   }
 }
 
@@ -138,7 +148,8 @@ bool Reader::boolean(const toml::node& n, const std::string& key) const {
   return b->get();
 }
 
-std::size_t Reader::choice(const toml::node& n, const std::string& key, const std::vector<std::string>& names) const {
+std::size_t Reader::choice(const toml::node& n, const std::string& key,
+                           const std::vector<std::string>& names) const {
   const std::string s = string(n, key);
   const auto it = std::find(names.begin(), names.end(), s);
   if (it == names.end()) bad(n, key, "must be one of " + join(names));

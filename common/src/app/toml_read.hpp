@@ -62,7 +62,8 @@ class Reader {
   std::string string(const toml::node& n, const std::string& key) const;
   bool boolean(const toml::node& n, const std::string& key) const;
   /// Index of the string's value in `names`.
-  std::size_t choice(const toml::node& n, const std::string& key, const std::vector<std::string>& names) const;
+  std::size_t choice(const toml::node& n, const std::string& key,
+                     const std::vector<std::string>& names) const;
   /// Three numbers, each in `range`; `components` names them for the message ("x, y, z").
   std::array<double, 3> vec3(const toml::node& n, const std::string& key, const RealRange& range,
                              std::string_view components) const;

@@ -39,10 +39,11 @@ void remove_temporaries() {
     for (std::size_t i = 0; i < slots; ++i)
       if (occupied[i] == file_slot) ::unlink(in_flight[i].data());
     for (std::size_t i = 0; i < slots; ++i)
-      if (occupied[i] == folder_slot && ::rmdir(in_flight[i].data()) != 0 && (errno == ENOTEMPTY || errno == EEXIST))
+      if (occupied[i] == folder_slot && ::rmdir(in_flight[i].data()) != 0 &&
+          (errno == ENOTEMPTY || errno == EEXIST))
         folder_left = true;
     if (!folder_left) return;
-    const struct timespec pause {0, 1'000'000};  // 1 ms: let the helper finish creating its file
+    const struct timespec pause { 0, 1'000'000 };  // 1 ms: let the helper finish creating its file
     ::nanosleep(&pause, nullptr);
   }
 }

@@ -11,7 +11,8 @@ namespace kit {
 FastPower::FastPower(double p) : p_(p) {
   if (!(std::abs(p) <= 8.0))
     throw std::invalid_argument(fmt::format("FastPower: exponent p = {} is outside [-8, 8]", p));
-  for (int k = 0; k < kExponents; ++k) powers_of_two_[std::size_t(k)] = std::exp2(p * double(k - kExponents / 2));
+  for (int k = 0; k < kExponents; ++k)
+    powers_of_two_[std::size_t(k)] = std::exp2(p * double(k - kExponents / 2));
   for (int j = 0; j < kSlices; ++j) {
     // The quadratic through (a, a^p), (m, m^p), (b, b^p) in Newton form,
     //   a^p + d1·(z − a) + d2·(z − a)(z − m),

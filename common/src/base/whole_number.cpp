@@ -35,7 +35,8 @@ WholeNumberText read_whole_number(std::string_view text) {
     if (at < text.size() && (text[at] == '-' || text[at] == '+')) ++at;
     const std::string_view exponent_digits = digits_at(text, at);
     if (exponent_digits.empty()) return {Kind::not_a_number};
-    for (char c : exponent_digits) exponent = std::min(exponent * 10 + (c - '0'), 100'000L);  // capped: huge is huge
+    for (char c : exponent_digits)
+      exponent = std::min(exponent * 10 + (c - '0'), 100'000L);  // capped: huge is huge
     if (exponent_negative) exponent = -exponent;
   }
   if (at != text.size()) return {Kind::not_a_number};

@@ -19,7 +19,8 @@ Eigen::VectorXd ClothGrid::node_masses() const {
   Eigen::VectorXd m = Eigen::VectorXd::Zero(nodes());
   for (int j = 0; j + 1 < ny; ++j)
     for (int i = 0; i + 1 < nx; ++i)
-      for (long node : {index(i, j), index(i + 1, j), index(i, j + 1), index(i + 1, j + 1)}) m[node] += quarter;
+      for (long node : {index(i, j), index(i + 1, j), index(i, j + 1), index(i + 1, j + 1)})
+        m[node] += quarter;
   return m;
 }
 

@@ -9,9 +9,12 @@ namespace kit {
 
 const std::optional<SpringFamily>& SpringLayout::family(SpringKind kind) const {
   switch (kind) {
-    case SpringKind::structural: return structural;
-    case SpringKind::shear: return shear;
-    case SpringKind::bend: break;
+    case SpringKind::structural:
+      return structural;
+    case SpringKind::shear:
+      return shear;
+    case SpringKind::bend:
+      break;
   }
   return bend;
 }
@@ -19,9 +22,12 @@ const std::optional<SpringFamily>& SpringLayout::family(SpringKind kind) const {
 int stages(ClothIntegrator integrator) {
   switch (integrator) {
     case ClothIntegrator::explicit_euler:
-    case ClothIntegrator::symplectic_euler: return 1;
-    case ClothIntegrator::midpoint: return 2;
-    case ClothIntegrator::rk4: return 4;
+    case ClothIntegrator::symplectic_euler:
+      return 1;
+    case ClothIntegrator::midpoint:
+      return 2;
+    case ClothIntegrator::rk4:
+      return 4;
   }
   return 0;
 }

@@ -60,19 +60,23 @@ namespace {
 // One run's spring forces on its a-ends, f = [K (L0 − l)/l − μ (Δv·x)/l²] x (x = x_a − x_b),
 // into fx, fy, fz. A zero-length spring has no direction and gets no force.
 template <bool damped>
-KIT_WIDEST_VECTORS void run_forces(const double* __restrict xa, const double* __restrict ya, const double* __restrict za,
-                const double* __restrict xb, const double* __restrict yb, const double* __restrict zb,
-                const double* __restrict vxa, const double* __restrict vya, const double* __restrict vza,
-                const double* __restrict vxb, const double* __restrict vyb, const double* __restrict vzb,
-                const double* __restrict rest, const double* __restrict k, const double* __restrict mu,
-                double* __restrict fx, double* __restrict fy, double* __restrict fz, int length) {
+KIT_WIDEST_VECTORS void run_forces(const double* __restrict xa, const double* __restrict ya,
+                                   const double* __restrict za, const double* __restrict xb,
+                                   const double* __restrict yb, const double* __restrict zb,
+                                   const double* __restrict vxa, const double* __restrict vya,
+                                   const double* __restrict vza, const double* __restrict vxb,
+                                   const double* __restrict vyb, const double* __restrict vzb,
+                                   const double* __restrict rest, const double* __restrict k,
+                                   const double* __restrict mu, double* __restrict fx, double* __restrict fy,
+                                   double* __restrict fz, int length) {
   for (int s = 0; s < length; ++s) {
     const double dx = xa[s] - xb[s], dy = ya[s] - yb[s], dz = za[s] - zb[s];
     const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
     const double inv = l > 0 ? 1.0 / l : 0.0;
     double scale = k[s] * (rest[s] - l) * inv;
     if constexpr (damped) {
-      const double rate = ((vxa[s] - vxb[s]) * dx + (vya[s] - vyb[s]) * dy + (vza[s] - vzb[s]) * dz) * inv * inv;
+      const double rate =
+          ((vxa[s] - vxb[s]) * dx + (vya[s] - vyb[s]) * dy + (vza[s] - vzb[s]) * dz) * inv * inv;
       scale -= mu[s] * rate;
     }
     fx[s] = scale * dx, fy[s] = scale * dy, fz[s] = scale * dz;
@@ -81,8 +85,9 @@ KIT_WIDEST_VECTORS void run_forces(const double* __restrict xa, const double* __
 
 // g += sign·f over one run, for each axis. The restrict pointers tell GCC what it cannot prove:
 // f's columns and the run's scratch forces do not overlap, so the loop vectorises.
-KIT_WIDEST_VECTORS void scatter(double* __restrict gx, double* __restrict gy, double* __restrict gz, const double* __restrict fx,
-             const double* __restrict fy, const double* __restrict fz, int length, double sign) {
+KIT_WIDEST_VECTORS void scatter(double* __restrict gx, double* __restrict gy, double* __restrict gz,
+                                const double* __restrict fx, const double* __restrict fy,
+                                const double* __restrict fz, int length, double sign) {
   for (int s = 0; s < length; ++s) gx[s] += sign * fx[s], gy[s] += sign * fy[s], gz[s] += sign * fz[s];
 }
 }  // namespace
@@ -101,13 +106,14 @@ void ClothForces::operator()(const NodeArray& x, const NodeArray& v, NodeArray& 
   double *gx = f.col(0).data(), *gy = f.col(1).data(), *gz = f.col(2).data();
   for (const Run& r : runs_) {
     const long a = r.first_node, b = a + r.offset;
-    const double *rest = rest_.data() + r.first, *k = stiffness_.data() + r.first, *mu = damping_.data() + r.first;
+    const double *rest = rest_.data() + r.first, *k = stiffness_.data() + r.first,
+                 *mu = damping_.data() + r.first;
     if (damped_)
       run_forces<true>(px + a, py + a, pz + a, px + b, py + b, pz + b, qx + a, qy + a, qz + a, qx + b, qy + b,
                        qz + b, rest, k, mu, fx_.data(), fy_.data(), fz_.data(), r.length);
     else
-      run_forces<false>(px + a, py + a, pz + a, px + b, py + b, pz + b, qx + a, qy + a, qz + a, qx + b, qy + b,
-                        qz + b, rest, k, mu, fx_.data(), fy_.data(), fz_.data(), r.length);
+      run_forces<false>(px + a, py + a, pz + a, px + b, py + b, pz + b, qx + a, qy + a, qz + a, qx + b,
+                        qy + b, qz + b, rest, k, mu, fx_.data(), fy_.data(), fz_.data(), r.length);
     // Scatter in two passes: within one pass no two springs write the same node, so both
     // vectorise (in one pass, a run of offset 1 would write node a + 1 twice in a row).
     scatter(gx + a, gy + a, gz + a, fx_.data(), fy_.data(), fz_.data(), r.length, 1.0);

@@ -49,7 +49,8 @@ ImplicitMatrix::ImplicitMatrix(const Springs& springs, long nodes, const std::ve
     std::sort(c.begin(), c.end());
     c.erase(std::unique(c.begin(), c.end()), c.end());
   }
-  for (long i = 0; i < nodes; ++i) row_sizes.segment<3>(3 * i).setConstant(3 * int(columns[std::size_t(i)].size()));
+  for (long i = 0; i < nodes; ++i)
+    row_sizes.segment<3>(3 * i).setConstant(3 * int(columns[std::size_t(i)].size()));
   matrix.resize(3 * nodes, 3 * nodes);
   matrix.reserve(row_sizes);
   for (long i = 0; i < nodes; ++i)
@@ -97,7 +98,8 @@ void ImplicitMatrix::assemble(const Springs& springs, const NodeArray& x, const 
   // M − h ∂f/∂v of the drag: m (1 + h c) on the diagonal.
   const double drag_factor = 1 + h * drag.value_or(0.0);
   for (Eigen::Index i = 0; i < masses.size(); ++i)
-    for (int r = 0; r < 3; ++r) values[outer[3 * i + r] + 3 * diagonal_[std::size_t(i)] + r] += masses[i] * drag_factor;
+    for (int r = 0; r < 3; ++r)
+      values[outer[3 * i + r] + 3 * diagonal_[std::size_t(i)] + r] += masses[i] * drag_factor;
   for (std::size_t s = 0; s < springs.size(); ++s) {
     const auto a = springs.a[s], b = springs.b[s];
     // B = −h ∂f_a/∂v_a − h² ∂f_a/∂x_a: +B on the diagonal blocks (a, a), (b, b), −B off them.

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
-#include <Eigen/IterativeLinearSolvers>
 #include <fmt/format.h>
+#include <Eigen/IterativeLinearSolvers>
 
 #include <kit/cloth/cloth_liu.hpp>
 
@@ -15,7 +15,8 @@ ImplicitWork& ImplicitWork::operator+=(const ImplicitWork& o) {
   max_cg_iterations = std::max(max_cg_iterations, o.max_cg_iterations);
   unconverged_solves += o.unconverged_solves, newton_iterations += o.newton_iterations;
   newton_unconverged += o.newton_unconverged, local_global += o.local_global;
-  factorizations += o.factorizations, multigrid_setups += o.multigrid_setups, blocks += o.blocks, assemblies += o.assemblies;
+  factorizations += o.factorizations, multigrid_setups += o.multigrid_setups, blocks += o.blocks,
+      assemblies += o.assemblies;
   filtered_nodes += o.filtered_nodes, worst_residual = std::max(worst_residual, o.worst_residual);
   return *this;
 }
@@ -84,7 +85,8 @@ void BackwardEulerStepper::friction(ClothSystem& cloth, double h) const {
     if (held.friction == 0 || cloth.inverse_masses()[held.node] == 0) continue;
     Vec3 v = cloth.v.row(held.node);
     const Vec3 tangential = v - v.dot(held.normal) * held.normal;
-    const double speed = tangential.norm(), loss = held.friction * h * held.pressure * cloth.inverse_masses()[held.node];
+    const double speed = tangential.norm(),
+                 loss = held.friction * h * held.pressure * cloth.inverse_masses()[held.node];
     if (speed == 0) continue;
     v -= std::min(1.0, loss / speed) * tangential;
     cloth.v.row(held.node) = v;
@@ -128,7 +130,8 @@ Eigen::VectorXd BackwardEulerStepper::solve(Eigen::VectorXd b, double tolerance)
   work.worst_residual = std::max(work.worst_residual, r.residual);
   if (r.negative_curvature)
     throw SolveFailed(fmt::format("negative curvature (cᵀAc ≤ 0) at CG iteration {}: A is not positive "
-                                  "definite", r.iterations));
+                                  "definite",
+                                  r.iterations));
   if (!r.x.allFinite() || !(r.residual <= 1))
     throw SolveFailed(fmt::format("the linear solve diverged: relative residual {:.3g} after {} iterations",
                                   r.residual, r.iterations));
@@ -166,7 +169,8 @@ NodeArray BackwardEulerStepper::velocity_change(ClothSystem& cloth, double h) {
   return out;
 }
 
-Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd dv, double f_norm, double h) {
+Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd dv, double f_norm,
+                                             double h) {
   const Springs& springs = cloth.springs();
   const Eigen::VectorXd& m = cloth.masses();
   const bool filtered = kit::filtered(settings_.solver);
@@ -181,7 +185,8 @@ Eigen::VectorXd BackwardEulerStepper::newton(ClothSystem& cloth, Eigen::VectorXd
     cloth.forces()(x1_, v1_, f_);
     g = -h * flatten(f_);
     for (Eigen::Index i = 0; i < m.size(); ++i) g.segment<3>(3 * i) += m[i] * dv.segment<3>(3 * i);
-    if (filtered) filter(g);
+    if (filtered)
+      filter(g);
     else
       for (const std::int32_t p : cloth.pins()) g.segment<3>(3 * p).setZero();
     return g.norm();
@@ -214,7 +219,8 @@ void BackwardEulerStepper::step(ClothSystem& cloth, double h) {
 }
 
 std::unique_ptr<ImplicitStepper> make_implicit_stepper(const ClothSystem& cloth, ImplicitMethod method,
-                                                       const ImplicitSettings& settings, ImplicitKernels kernels) {
+                                                       const ImplicitSettings& settings,
+                                                       ImplicitKernels kernels) {
   if (method == ImplicitMethod::liu) return std::make_unique<LiuStepper>(cloth, settings.iterations);
   return std::make_unique<BackwardEulerStepper>(cloth, method, settings, kernels);
 }

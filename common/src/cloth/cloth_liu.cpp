@@ -31,7 +31,8 @@ void LiuStepper::factorise(const ClothSystem& cloth, double h) {
   Eigen::SparseMatrix<double> global(free_count_, free_count_);
   global.setFromTriplets(entries.begin(), entries.end());
   cholesky_.compute(global);
-  if (cholesky_.info() != Eigen::Success) throw SolveFailed("the sparse Cholesky factorisation of M + h² L failed");
+  if (cholesky_.info() != Eigen::Success)
+    throw SolveFailed("the sparse Cholesky factorisation of M + h² L failed");
   factorised_h_ = h;
   ++work.factorizations;
 }

@@ -41,8 +41,9 @@ std::vector<std::vector<std::pair<int, double>>> side_parents(int n) {
 GridMultigrid::GridMultigrid(int nx, int ny, const SparseMatrix& pattern) {
   if (nx < 1 || ny < 1 || pattern.rows() != 3L * nx * ny || pattern.cols() != pattern.rows() ||
       !pattern.isCompressed())
-    throw std::invalid_argument(fmt::format("multigrid: a {}×{} grid needs a compressed {}×{} matrix, not {}×{}", nx,
-                                            ny, 3L * nx * ny, 3L * nx * ny, pattern.rows(), pattern.cols()));
+    throw std::invalid_argument(
+        fmt::format("multigrid: a {}×{} grid needs a compressed {}×{} matrix, not {}×{}", nx, ny,
+                    3L * nx * ny, 3L * nx * ny, pattern.rows(), pattern.cols()));
   Level finest;
   finest.nx = nx, finest.ny = ny;
   const int* outer = pattern.outerIndexPtr();
@@ -55,7 +56,8 @@ GridMultigrid::GridMultigrid(int nx, int ny, const SparseMatrix& pattern) {
       for (int k = 0; k < 3 * blocks && block_rows; ++k)
         block_rows = inner[begin + 3 * blocks * r + k] == inner[begin + k / 3 * 3] / 3 * 3 + k % 3;
     if (!block_rows)
-      throw std::invalid_argument(fmt::format("multigrid: node {}'s rows are not 3×3 blocks in the same columns", i));
+      throw std::invalid_argument(
+          fmt::format("multigrid: node {}'s rows are not 3×3 blocks in the same columns", i));
     for (int k = 0; k < blocks; ++k) {
       const int j = inner[begin + 3 * k] / 3;
       if (j == i) finest.diagonal.push_back(k);
@@ -71,7 +73,8 @@ GridMultigrid::GridMultigrid(int nx, int ny, const SparseMatrix& pattern) {
   while (levels_.back().nx > coarsest_side || levels_.back().ny > coarsest_side) add_coarser_level();
   for (Level& level : levels_) {
     const auto nodes = std::size_t(level.nodes());
-    level.x.assign(nodes, Node::Zero()), level.b.assign(nodes, Node::Zero()), level.r.assign(nodes, Node::Zero());
+    level.x.assign(nodes, Node::Zero()), level.b.assign(nodes, Node::Zero()),
+        level.r.assign(nodes, Node::Zero());
     level.inverse_diagonal.assign(nodes, Block::Zero());
   }
   coarsest_b_.resize(3 * levels_.back().nodes());
@@ -104,7 +107,8 @@ void GridMultigrid::add_coarser_level() {
       const auto [a0, a1] = parents_of(i);
       const auto [b0, b1] = parents_of(fine.column[std::size_t(e)]);
       for (int a = a0; a < a1; ++a)
-        for (int b = b0; b < b1; ++b) columns[std::size_t(fine.parent[std::size_t(a)])].push_back(fine.parent[std::size_t(b)]);
+        for (int b = b0; b < b1; ++b)
+          columns[std::size_t(fine.parent[std::size_t(a)])].push_back(fine.parent[std::size_t(b)]);
     }
   coarse.first = {0};
   for (int I = 0; I < coarse.nodes(); ++I) {
@@ -149,7 +153,8 @@ bool GridMultigrid::setup(const SparseMatrix& A) {
     for (int k = 0; k < blocks; ++k) {
       Block& block = finest.values[std::size_t(first + k)];
       for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) block(r, c) = float(values[csr_first_[std::size_t(i)] + 3 * blocks * r + 3 * k + c]);
+        for (int c = 0; c < 3; ++c)
+          block(r, c) = float(values[csr_first_[std::size_t(i)] + 3 * blocks * r + 3 * k + c]);
     }
   }
   // Pᵀ A P, level by level: every term adds a weighted fine block to a coarse one.
@@ -169,7 +174,8 @@ bool GridMultigrid::setup(const SparseMatrix& A) {
   bool invertible = true;
   for (Level& level : levels_)
     for (int i = 0; i < level.nodes(); ++i) {
-      const Block& d = level.values[std::size_t(level.first[std::size_t(i)] + level.diagonal[std::size_t(i)])];
+      const Block& d =
+          level.values[std::size_t(level.first[std::size_t(i)] + level.diagonal[std::size_t(i)])];
       Block& inverse = level.inverse_diagonal[std::size_t(i)];
       inverse.topRows<3>() = d.topRows<3>().cast<double>().inverse().cast<float>();
       invertible = invertible && inverse.allFinite();
@@ -204,7 +210,8 @@ void GridMultigrid::smooth(Level& level, bool forward, bool from_zero) {
   const int n = level.nodes();
   for (int s = 0; s < n; ++s) {
     const int i = forward ? s : n - 1 - s;
-    const Node gap = level.b[std::size_t(i)] - row_product(level, i, 0, from_zero ? level.diagonal[std::size_t(i)] : -1);
+    const Node gap =
+        level.b[std::size_t(i)] - row_product(level, i, 0, from_zero ? level.diagonal[std::size_t(i)] : -1);
     const Block& d = level.inverse_diagonal[std::size_t(i)];
     level.x[std::size_t(i)] += d.col(0) * gap[0] + d.col(1) * gap[1] + d.col(2) * gap[2];
   }
@@ -220,9 +227,11 @@ void GridMultigrid::residual_after_forward_sweep(Level& level) {
 void GridMultigrid::cycle(std::size_t l) {
   Level& level = levels_[l];
   if (l + 1 == levels_.size()) {  // exactly, in double
-    for (int i = 0; i < level.nodes(); ++i) coarsest_b_.segment<3>(3 * i) = level.b[std::size_t(i)].head<3>().cast<double>();
+    for (int i = 0; i < level.nodes(); ++i)
+      coarsest_b_.segment<3>(3 * i) = level.b[std::size_t(i)].head<3>().cast<double>();
     const Eigen::VectorXd x = coarsest_.solve(coarsest_b_);
-    for (int i = 0; i < level.nodes(); ++i) level.x[std::size_t(i)] << x.segment<3>(3 * i).cast<float>(), 0.0f;
+    for (int i = 0; i < level.nodes(); ++i)
+      level.x[std::size_t(i)] << x.segment<3>(3 * i).cast<float>(), 0.0f;
     return;
   }
   std::fill(level.x.begin(), level.x.end(), Node::Zero());
@@ -232,26 +241,31 @@ void GridMultigrid::cycle(std::size_t l) {
   std::fill(coarse.b.begin(), coarse.b.end(), Node::Zero());  // Pᵀ r
   for (int i = 0; i < level.nodes(); ++i)
     for (int k = level.parent_first[std::size_t(i)]; k < level.parent_first[std::size_t(i) + 1]; ++k)
-      coarse.b[std::size_t(level.parent[std::size_t(k)])] += level.weight[std::size_t(k)] * level.r[std::size_t(i)];
+      coarse.b[std::size_t(level.parent[std::size_t(k)])] +=
+          level.weight[std::size_t(k)] * level.r[std::size_t(i)];
   cycle(l + 1);
   for (int i = 0; i < level.nodes(); ++i)  // x += P x_c
     for (int k = level.parent_first[std::size_t(i)]; k < level.parent_first[std::size_t(i) + 1]; ++k)
-      level.x[std::size_t(i)] += level.weight[std::size_t(k)] * coarse.x[std::size_t(level.parent[std::size_t(k)])];
+      level.x[std::size_t(i)] +=
+          level.weight[std::size_t(k)] * coarse.x[std::size_t(level.parent[std::size_t(k)])];
   smooth(level, false, false);
 }
 
 void GridMultigrid::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) {
   Level& finest = levels_[0];
-  for (int i = 0; i < finest.nodes(); ++i) finest.b[std::size_t(i)] << r.segment<3>(3 * i).cast<float>(), 0.0f;
+  for (int i = 0; i < finest.nodes(); ++i)
+    finest.b[std::size_t(i)] << r.segment<3>(3 * i).cast<float>(), 0.0f;
   cycle(0);
   z.resize(r.size());
-  for (int i = 0; i < finest.nodes(); ++i) z.segment<3>(3 * i) = finest.x[std::size_t(i)].head<3>().cast<double>();
+  for (int i = 0; i < finest.nodes(); ++i)
+    z.segment<3>(3 * i) = finest.x[std::size_t(i)].head<3>().cast<double>();
 }
 
 PcgResult multigrid_pcg(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Mat3>& filters,
                         GridMultigrid& multigrid, double tolerance, int max_iterations) {
   const auto project = [&filters](Eigen::VectorXd& w) {  // w ← S w, node by node
-    for (std::size_t i = 0; i < filters.size(); ++i) w.segment<3>(3 * Eigen::Index(i)) = filters[i] * w.segment<3>(3 * Eigen::Index(i));
+    for (std::size_t i = 0; i < filters.size(); ++i)
+      w.segment<3>(3 * Eigen::Index(i)) = filters[i] * w.segment<3>(3 * Eigen::Index(i));
   };
   PcgResult result;
   Eigen::VectorXd residual = b, preconditioned, direction, product;

@@ -37,8 +37,9 @@ void draw_surroundings(const Pinhole& camera, const ClothScene& scene, DepthCanv
   RayForeground spheres;
   if (!scene.spheres.empty()) {
     in_shadow = [&](const Vec3& p) {
-      return std::any_of(scene.spheres.begin(), scene.spheres.end(),
-                         [&](const SphereCollider& sphere) { return bool(hit_sphere(p, light, sphere, 1e-6)); });
+      return std::any_of(scene.spheres.begin(), scene.spheres.end(), [&](const SphereCollider& sphere) {
+        return bool(hit_sphere(p, light, sphere, 1e-6));
+      });
     };
     spheres = [&](const Vec3& ray, RayHit& hit) {
       for (const SphereCollider& sphere : scene.spheres) {

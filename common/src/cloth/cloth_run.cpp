@@ -35,7 +35,8 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
     long count, steps, next = 1;
     bool due(long k) {
       bool hit = false;
-      while (next <= count && std::lround(double(next) * double(steps) / double(count)) <= k) ++next, hit = true;
+      while (next <= count && std::lround(double(next) * double(steps) / double(count)) <= k)
+        ++next, hit = true;
       return hit;
     }
   };
@@ -47,11 +48,14 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
   ProgressCounter progress;
   std::unique_ptr<ImplicitStepper> implicit;
   if (options.implicit)
-    implicit = make_implicit_stepper(cloth, *options.implicit, options.implicit_settings, options.implicit_kernels);
+    implicit =
+        make_implicit_stepper(cloth, *options.implicit, options.implicit_settings, options.implicit_kernels);
   for (long k = 1; k <= steps; ++k) {
     try {
-      if (implicit) implicit->step(cloth, options.dt);
-      else cloth.step(options.integrator, options.dt);
+      if (implicit)
+        implicit->step(cloth, options.dt);
+      else
+        cloth.step(options.integrator, options.dt);
     } catch (const SolveFailed& e) {
       rec.exploded_at = cloth.t + options.dt;  // the step that could not be taken
       rec.failure = e.what();

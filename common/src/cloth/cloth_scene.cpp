@@ -23,8 +23,8 @@ ClothScene on_grid(const ClothScene& scene, int nx, int ny, int n) {
   for (const Pin& pin : scene.pins) {
     const long i = resolve(pin.i, nx), j = resolve(pin.j, ny);
     if (i < 0 || i >= nx || j < 0 || j >= ny)
-      throw UsageError(fmt::format("resolution {}: pin [{}, {}] lies outside the {} × {} grid", n, pin.i, pin.j,
-                                   nx, ny));
+      throw UsageError(
+          fmt::format("resolution {}: pin [{}, {}] lies outside the {} × {} grid", n, pin.i, pin.j, nx, ny));
   }
   return out;
 }

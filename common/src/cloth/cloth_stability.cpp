@@ -93,7 +93,8 @@ double predicted_dt_max(ClothIntegrator integrator, double omega_max, double dam
   if (!(omega_max > 0)) return 0;
   // Undamped, explicit Euler (|R|² = 1 + (hω)²) and midpoint (|R|² = 1 + (hω)⁴/4) grow at every
   // step size, by less than round-off per step when h is small: say so rather than sample it.
-  const bool grows_always = integrator == ClothIntegrator::explicit_euler || integrator == ClothIntegrator::midpoint;
+  const bool grows_always =
+      integrator == ClothIntegrator::explicit_euler || integrator == ClothIntegrator::midpoint;
   if (damping_time == 0 && grows_always) return 0;
   double lo = 1e-6 / omega_max, hi = 10 / omega_max;
   if (!every_mode_bounded(integrator, lo, omega_max, damping_time)) return 0;
@@ -166,7 +167,8 @@ StabilityAtResolution stability_at(const ClothScene& scene, int n, ClothKernels 
   return r;
 }
 
-std::vector<StabilityCase> stability_cases(const ClothScene& scene, int n, ClothKernels kernels, double damping_time) {
+std::vector<StabilityCase> stability_cases(const ClothScene& scene, int n, ClothKernels kernels,
+                                           double damping_time) {
   const double k = scene.springs.structural ? scene.springs.structural->stiffness : 1000.0;
   std::vector<StabilityCase> cases;
   const auto run = [&](const std::string& name, int families, ClothIntegrator integrator, double c) {
@@ -177,8 +179,10 @@ std::vector<StabilityCase> stability_cases(const ClothScene& scene, int n, Cloth
     variant.springs.structural = family;
     if (families >= 2) variant.springs.shear = family;
     if (families >= 3) variant.springs.bend = family;
-    const bool slow_growth = c > 0 && (integrator == ClothIntegrator::explicit_euler || integrator == ClothIntegrator::midpoint);
-    cases.push_back({name, integrator, c, stability_at(variant, n, kernels, integrator, c, slow_growth ? 20000 : 2000)});
+    const bool slow_growth =
+        c > 0 && (integrator == ClothIntegrator::explicit_euler || integrator == ClothIntegrator::midpoint);
+    cases.push_back(
+        {name, integrator, c, stability_at(variant, n, kernels, integrator, c, slow_growth ? 20000 : 2000)});
   };
   const char* names[] = {"structural", "+ shear", "+ shear + bend"};
   for (int families = 1; families <= 3; ++families)

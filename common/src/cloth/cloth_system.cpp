@@ -108,7 +108,8 @@ void ClothSystem::contacts() {
     // Ex 6.4 sees every node; a pin it moved goes back where it is held.
     for (std::size_t k = 0; k < pins_.size(); ++k) pinned_x_.row(long(k)) = x.row(pins_[k]);
     work.contacts += kernels_.collide_sphere(x, v, padded);
-    for (std::size_t k = 0; k < pins_.size(); ++k) x.row(pins_[k]) = pinned_x_.row(long(k)), v.row(pins_[k]).setZero();
+    for (std::size_t k = 0; k < pins_.size(); ++k)
+      x.row(pins_[k]) = pinned_x_.row(long(k)), v.row(pins_[k]).setZero();
   }
 }
 

@@ -66,8 +66,10 @@ NodeArray vertex_normals(const ClothGrid& grid, const NodeArray& x) {
   const Vec3 fallback = sheet_normal(grid);
   for (long k = 0; k < sum.rows(); ++k) {
     const double length = sum.row(k).norm();
-    if (std::isfinite(length) && length > 1e-300) sum.row(k) /= length;
-    else sum.row(k) = fallback.transpose();
+    if (std::isfinite(length) && length > 1e-300)
+      sum.row(k) /= length;
+    else
+      sum.row(k) = fallback.transpose();
   }
   return sum;
 }
@@ -75,10 +77,11 @@ NodeArray vertex_normals(const ClothGrid& grid, const NodeArray& x) {
 void write_cloth_obj(const std::filesystem::path& path, const ClothGrid& grid, const NodeArray& x) {
   const NodeArray normals = vertex_normals(grid, x);
   const int nx = grid.nx, ny = grid.ny;
-  std::string text = fmt::format(
-      "# Cloth sheet, {} x {} nodes ({} x {} m at rest), {} triangles; positions in metres.\n"
-      "# Written by the physics-for-animation kit; opens in Blender and MeshLab.\n"
-      "o cloth\n", nx, ny, grid.width, grid.height, 2L * (nx - 1) * (ny - 1));
+  std::string text =
+      fmt::format("# Cloth sheet, {} x {} nodes ({} x {} m at rest), {} triangles; positions in metres.\n"
+                  "# Written by the physics-for-animation kit; opens in Blender and MeshLab.\n"
+                  "o cloth\n",
+                  nx, ny, grid.width, grid.height, 2L * (nx - 1) * (ny - 1));
   text.reserve(text.size() + std::size_t(x.rows()) * 110);
   for (long k = 0; k < x.rows(); ++k)
     text += fmt::format("v {:.9g} {:.9g} {:.9g}\n", x(k, 0), x(k, 1), x(k, 2));

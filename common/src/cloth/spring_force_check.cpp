@@ -10,7 +10,9 @@ namespace kit {
 SpringForceCheck check_spring_force(SpringForce force, int springs) {
   std::mt19937_64 random(61);
   std::uniform_real_distribution<double> unit(-1, 1), ratio(0.5, 2), log_k(0, 4), mu(0, 10);
-  const auto vector = [&](double scale) { return Vec3(scale * unit(random), scale * unit(random), scale * unit(random)); };
+  const auto vector = [&](double scale) {
+    return Vec3(scale * unit(random), scale * unit(random), scale * unit(random));
+  };
   SpringForceCheck check;
   check.springs = springs;
   for (int s = 0; s < springs; ++s) {
@@ -24,7 +26,10 @@ SpringForceCheck check_spring_force(SpringForce force, int springs) {
     // Undamped: F_a = −∂E/∂x_a, E = ½K(|x_a − x_b| − L0)², by central differences (error ~h²).
     const SpringFamily stiff{family.stiffness, 0};
     const Vec3 zero = Vec3::Zero(), f = force(xa, xb, zero, zero, rest, stiff);
-    const auto energy = [&](const Vec3& p) { const double e = (p - xb).norm() - rest; return 0.5 * stiff.stiffness * e * e; };
+    const auto energy = [&](const Vec3& p) {
+      const double e = (p - xb).norm() - rest;
+      return 0.5 * stiff.stiffness * e * e;
+    };
     Vec3 gradient;
     const double h = 1e-6 * rest;
     for (int axis = 0; axis < 3; ++axis) {
@@ -32,16 +37,20 @@ SpringForceCheck check_spring_force(SpringForce force, int springs) {
       step[axis] = h;
       gradient[axis] = (energy(xa + step) - energy(xa - step)) / (2 * h);
     }
-    check.energy_gradient = std::max(check.energy_gradient, (f + gradient).norm() / std::max(f.norm(), 1e-300));
+    check.energy_gradient =
+        std::max(check.energy_gradient, (f + gradient).norm() / std::max(f.norm(), 1e-300));
     // Both ends moving with the same velocity: the length does not change, so no damping.
     const Vec3 together = force(xa, xb, va, va, rest, family) - force(xa, xb, zero, zero, rest, family);
-    if (family.damping > 0) check.rigid_damping = std::max(check.rigid_damping, together.norm() / (family.damping * va.norm()));
+    if (family.damping > 0)
+      check.rigid_damping = std::max(check.rigid_damping, together.norm() / (family.damping * va.norm()));
     // a moving away from b along the spring at speed w: the damping force is −μ w along x̂.
     const Vec3 along = (xa - xb).normalized();
     const double w = 1 + std::abs(unit(random));
-    const Vec3 damping = force(xa, xb, w * along, zero, rest, family) - force(xa, xb, zero, zero, rest, family);
+    const Vec3 damping =
+        force(xa, xb, w * along, zero, rest, family) - force(xa, xb, zero, zero, rest, family);
     if (family.damping > 0)
-      check.stretch_damping = std::max(check.stretch_damping, (damping + family.damping * w * along).norm() / (family.damping * w));
+      check.stretch_damping = std::max(check.stretch_damping,
+                                       (damping + family.damping * w * along).norm() / (family.damping * w));
   }
   return check;
 }

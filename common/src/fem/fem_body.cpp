@@ -42,7 +42,8 @@ Vec3 node3(const NodeArray& x, int i) { return x.row(i).transpose(); }
 
 /// The node pairs whose 3×3 blocks each element (3 × 3 pairs) or spring (a-a, a-b, b-a, b-b)
 /// fills, in the order stiffness() fills them.
-std::vector<std::pair<int, int>> block_pairs(const TriangleMesh& mesh, const Springs& springs, bool by_springs) {
+std::vector<std::pair<int, int>> block_pairs(const TriangleMesh& mesh, const Springs& springs,
+                                             bool by_springs) {
   std::vector<std::pair<int, int>> pairs;
   if (by_springs) {
     for (std::size_t s = 0; s < springs.size(); ++s) {
@@ -59,7 +60,8 @@ std::vector<std::pair<int, int>> block_pairs(const TriangleMesh& mesh, const Spr
 
 }  // namespace
 
-FemBody::FemBody(TriangleMesh mesh, const FemMaterial& material, FemModel model, const ContinuumKernels& kernels)
+FemBody::FemBody(TriangleMesh mesh, const FemMaterial& material, FemModel model,
+                 const ContinuumKernels& kernels)
     : mesh_(std::move(mesh)),
       material_(material),
       model_(model),
@@ -76,12 +78,14 @@ FemBody::FemBody(TriangleMesh mesh, const FemMaterial& material, FemModel model,
   filters.assign(n, Mat3::Identity());
   rest_.reserve(mesh_.triangles.size());
   for (const auto& tri : mesh_.triangles) {
-    rest_.push_back(rest_triangle(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]], material.thickness));
+    rest_.push_back(
+        rest_triangle(mesh_.nodes[tri[0]], mesh_.nodes[tri[1]], mesh_.nodes[tri[2]], material.thickness));
     for (const int node : tri) masses[node] += material.density * rest_.back().volume / 3;
   }
   if (model_ == FemModel::springs) springs_ = edge_springs(mesh_, material_);
   if (model_ == FemModel::linear)
-    for (const auto& rest : rest_) linear_stiffness_.push_back(linear_stiffness(rest.inverse, rest.volume, lame_));
+    for (const auto& rest : rest_)
+      linear_stiffness_.push_back(linear_stiffness(rest.inverse, rest.volume, lame_));
   // The stiffness's pattern, once: a zero for every entry of every block, summed into place.
   const auto pairs = block_pairs(mesh_, springs_, model_ == FemModel::springs);
   std::vector<Eigen::Triplet<double>> entries;
@@ -109,7 +113,8 @@ void FemBody::hold_in_plane() {
 
 Matrix32 FemBody::gradient(std::size_t t) const {
   const auto& tri = mesh_.triangles[t];
-  return kernels_.element.deformation_gradient(node3(x, tri[0]), node3(x, tri[1]), node3(x, tri[2]), rest_[t].inverse);
+  return kernels_.element.deformation_gradient(node3(x, tri[0]), node3(x, tri[1]), node3(x, tri[2]),
+                                               rest_[t].inverse);
 }
 
 void FemBody::forces(NodeArray& out, double drag) const {
@@ -118,8 +123,8 @@ void FemBody::forces(NodeArray& out, double drag) const {
   if (model_ == FemModel::springs) {
     for (std::size_t s = 0; s < springs_.size(); ++s) {
       const int a = springs_.a[s], b = springs_.b[s];
-      const Vec3 f = kernels_.spring_force(node3(x, a), node3(x, b), node3(v, a), node3(v, b), springs_.rest[s],
-                                              SpringFamily{springs_.stiffness[s], 0.0});
+      const Vec3 f = kernels_.spring_force(node3(x, a), node3(x, b), node3(v, a), node3(v, b),
+                                           springs_.rest[s], SpringFamily{springs_.stiffness[s], 0.0});
       out.row(a) += f.transpose();
       out.row(b) -= f.transpose();
     }
@@ -137,10 +142,10 @@ void FemBody::forces(NodeArray& out, double drag) const {
 
 void FemBody::stiffness(SparseMatrix& out) const {
   const bool same_pattern = out.rows() == pattern_.rows() && out.nonZeros() == pattern_.nonZeros() &&
-                            std::equal(pattern_.outerIndexPtr(), pattern_.outerIndexPtr() + pattern_.rows() + 1,
-                                       out.outerIndexPtr()) &&
-                            std::equal(pattern_.innerIndexPtr(), pattern_.innerIndexPtr() + pattern_.nonZeros(),
-                                       out.innerIndexPtr());
+                            std::equal(pattern_.outerIndexPtr(),
+                                       pattern_.outerIndexPtr() + pattern_.rows() + 1, out.outerIndexPtr()) &&
+                            std::equal(pattern_.innerIndexPtr(),
+                                       pattern_.innerIndexPtr() + pattern_.nonZeros(), out.innerIndexPtr());
   if (!same_pattern) out = pattern_;
   double* values = out.valuePtr();
   std::fill(values, values + out.nonZeros(), 0.0);
@@ -154,10 +159,10 @@ void FemBody::stiffness(SparseMatrix& out) const {
       const int a = springs_.a[s], b = springs_.b[s];
       const Mat3 J =
           kernels_.spring_stiffness(node3(x, a), node3(x, b), springs_.rest[s], springs_.stiffness[s], false);
-      add_block(J);  // a-a
+      add_block(J);   // a-a
       add_block(-J);  // a-b
       add_block(-J);  // b-a
-      add_block(J);  // b-b
+      add_block(J);   // b-b
     }
     return;
   }

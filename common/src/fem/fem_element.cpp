@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/LU>
 #include <fmt/format.h>
+#include <Eigen/LU>
 
 namespace kit {
 
@@ -18,8 +18,9 @@ RestTriangle rest_triangle(const Eigen::Vector2d& X0, const Eigen::Vector2d& X1,
   // A triangle thinner than round-off of its own size has no usable Dm⁻¹.
   const double scale = (X1 - X0).squaredNorm() + (X2 - X0).squaredNorm();
   if (!(twice_area > 1e-12 * scale))
-    throw std::invalid_argument(fmt::format("rest triangle ({}, {}) ({}, {}) ({}, {}): degenerate or clockwise",
-                                            X0.x(), X0.y(), X1.x(), X1.y(), X2.x(), X2.y()));
+    throw std::invalid_argument(
+        fmt::format("rest triangle ({}, {}) ({}, {}) ({}, {}): degenerate or clockwise", X0.x(), X0.y(),
+                    X1.x(), X1.y(), X2.x(), X2.y()));
   return {edges.inverse(), 0.5 * twice_area * thickness};
 }
 
@@ -47,7 +48,8 @@ Matrix2 linear_stress(const Matrix2& strain, const Lame& lame) {
   return lame.lambda * strain.trace() * Matrix2::Identity() + 2 * lame.mu * strain;
 }
 
-ElementForces linear_forces(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume, const Lame& lame) {
+ElementForces linear_forces(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume,
+                            const Lame& lame) {
   return plane_stress_forces(linear_stress(cauchy_strain(F), lame), rest_inverse, rest_volume);
 }
 
@@ -66,7 +68,8 @@ Matrix9 linear_stiffness(const Matrix2& rest_inverse, double rest_volume, const 
       Matrix32 moved_edges;
       moved_edges.col(0) = x[1] - x[0];
       moved_edges.col(1) = x[2] - x[0];
-      K.col(3 * node + axis) = linear_forces(moved_edges * rest_inverse, rest_inverse, rest_volume, lame).reshaped();
+      K.col(3 * node + axis) =
+          linear_forces(moved_edges * rest_inverse, rest_inverse, rest_volume, lame).reshaped();
     }
   return K;
 }

@@ -38,7 +38,8 @@ ImplicitStep implicit_step(FemBody& body, double h, double drag, double toleranc
   const Eigen::VectorXd v = flatten(body.v);
   SparseMatrix A = (-h * h) * K;  // every diagonal entry is in K's pattern: the node's own block
   for (long i = 0; i < body.nodes(); ++i)
-    for (int axis = 0; axis < 3; ++axis) A.coeffRef(3 * i + axis, 3 * i + axis) += body.masses[i] * (1 + h * drag);
+    for (int axis = 0; axis < 3; ++axis)
+      A.coeffRef(3 * i + axis, 3 * i + axis) += body.masses[i] * (1 + h * drag);
   Eigen::VectorXd b = h * (flatten(f) + h * (K * v));
   for (long i = 0; i < body.nodes(); ++i) b.segment<3>(3 * i) = body.filters[i] * b.segment<3>(3 * i);
   const PcgResult solve = body.kernels().pcg(A, b, body.filters, tolerance, max_iterations);

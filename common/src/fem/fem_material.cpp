@@ -10,7 +10,8 @@ namespace {
 
 void require_material(double young, double poisson) {
   if (!(young > 0) || !std::isfinite(young))
-    throw std::invalid_argument(fmt::format("Young's modulus {} Pa: expected a positive finite number", young));
+    throw std::invalid_argument(
+        fmt::format("Young's modulus {} Pa: expected a positive finite number", young));
   if (!(poisson > -1 && poisson < 0.5))  // the energy is positive definite only there
     throw std::invalid_argument(fmt::format("Poisson's ratio {}: expected (-1, 0.5)", poisson));
 }

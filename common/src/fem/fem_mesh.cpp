@@ -14,8 +14,10 @@ namespace {
 
 void require_rectangle(double width, double height, int nx, int ny) {
   if (!(width > 0 && height > 0 && std::isfinite(width) && std::isfinite(height)) || nx < 1 || ny < 1)
-    throw std::invalid_argument(fmt::format("a {} × {} m rectangle of {} × {} cells: sizes must be positive and "
-                                            "finite, cell counts at least 1", width, height, nx, ny));
+    throw std::invalid_argument(
+        fmt::format("a {} × {} m rectangle of {} × {} cells: sizes must be positive and "
+                    "finite, cell counts at least 1",
+                    width, height, nx, ny));
 }
 
 // The grid's nodes, row by row from (0, 0).
@@ -35,7 +37,8 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Ve
 double incircle(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                 const Eigen::Vector2d& d) {
   const Eigen::Vector2d p = a - d, q = b - d, r = c - d;
-  return p.squaredNorm() * (q.x() * r.y() - q.y() * r.x()) - q.squaredNorm() * (p.x() * r.y() - p.y() * r.x()) +
+  return p.squaredNorm() * (q.x() * r.y() - q.y() * r.x()) -
+         q.squaredNorm() * (p.x() * r.y() - p.y() * r.x()) +
          r.squaredNorm() * (p.x() * q.y() - p.y() * q.x());
 }
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <vector>
 
-#include <Eigen/SparseCholesky>
 #include <fmt/format.h>
+#include <Eigen/SparseCholesky>
 
 namespace kit {
 namespace {
@@ -13,7 +13,8 @@ namespace {
 double largest_displacement(const FemBody& body) {
   double largest = 0;
   for (long i = 0; i < body.nodes(); ++i)
-    largest = std::max(largest, (body.x.row(i).head<2>().transpose() - body.mesh().nodes[i]).cwiseAbs().maxCoeff());
+    largest =
+        std::max(largest, (body.x.row(i).head<2>().transpose() - body.mesh().nodes[i]).cwiseAbs().maxCoeff());
   return largest;
 }
 
@@ -26,7 +27,8 @@ StaticSolve newton(FemBody& body, int max_iterations, double tolerance) {
   StaticSolve out;
   NodeArray f;
   SparseMatrix K;
-  Eigen::SparseMatrix<double> reduced(static_cast<Eigen::Index>(free.size()), static_cast<Eigen::Index>(free.size()));
+  Eigen::SparseMatrix<double> reduced(static_cast<Eigen::Index>(free.size()),
+                                      static_cast<Eigen::Index>(free.size()));
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
   double last_step = 0;  // the largest coordinate change of the last Newton step [m]
@@ -40,14 +42,16 @@ StaticSolve newton(FemBody& body, int max_iterations, double tolerance) {
       return out;
     }
     if (out.iterations == max_iterations) {
-      out.failure = fmt::format("no convergence in {} Newton steps (residual {:.2g})", max_iterations, out.residual);
+      out.failure =
+          fmt::format("no convergence in {} Newton steps (residual {:.2g})", max_iterations, out.residual);
       return out;
     }
     body.stiffness(K);  // the same pattern every step: the ordering is found once
     entries.clear();
     for (int row = 0; row < K.outerSize(); ++row)
       for (SparseMatrix::InnerIterator it(K, row); it; ++it)
-        if (slot[row] >= 0 && slot[it.col()] >= 0) entries.emplace_back(slot[row], slot[it.col()], -it.value());
+        if (slot[row] >= 0 && slot[it.col()] >= 0)
+          entries.emplace_back(slot[row], slot[it.col()], -it.value());
     reduced.setFromTriplets(entries.begin(), entries.end());
     if (out.iterations == 0) solver.analyzePattern(reduced);
     solver.factorize(reduced);

@@ -96,7 +96,8 @@ long double row_sum_defect(const ButcherTableau& t) {
   return worst;
 }
 
-int satisfied_order(const ButcherTableau& t, const std::vector<long double>& b, Nodes nodes, long double tolerance) {
+int satisfied_order(const ButcherTableau& t, const std::vector<long double>& b, Nodes nodes,
+                    long double tolerance) {
   const std::size_t s = static_cast<std::size_t>(t.stages());
   using Vec = std::vector<long double>;
   Vec c = t.c;
@@ -129,8 +130,14 @@ int satisfied_order(const ButcherTableau& t, const std::vector<long double>& b, 
       {{c, 1.0L / 2}},
       {{c2, 1.0L / 3}, {ac, 1.0L / 6}},
       {{c3, 1.0L / 4}, {times(c, ac), 1.0L / 8}, {ac2, 1.0L / 12}, {aac, 1.0L / 24}},
-      {{c4, 1.0L / 5}, {times(c2, ac), 1.0L / 10}, {times(c, ac2), 1.0L / 15}, {times(c, aac), 1.0L / 30},
-       {times(ac, ac), 1.0L / 20}, {ac3, 1.0L / 20}, {times_a(times(c, ac)), 1.0L / 40}, {aac2, 1.0L / 60},
+      {{c4, 1.0L / 5},
+       {times(c2, ac), 1.0L / 10},
+       {times(c, ac2), 1.0L / 15},
+       {times(c, aac), 1.0L / 30},
+       {times(ac, ac), 1.0L / 20},
+       {ac3, 1.0L / 20},
+       {times_a(times(c, ac)), 1.0L / 40},
+       {aac2, 1.0L / 60},
        {times_a(aac), 1.0L / 120}}};
   int order = 0;
   for (const auto& level : conditions) {

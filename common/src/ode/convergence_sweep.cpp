@@ -48,12 +48,14 @@ ConvergenceSweep fit_sweep(std::vector<SweepPoint> points, double omega, double 
   return sweep;
 }
 
-EvaluationsNeeded evaluations_needed(const ConvergenceSweep& sweep, int evaluations_per_step, double tolerance,
-                                     double max_steps) {
+EvaluationsNeeded evaluations_needed(const ConvergenceSweep& sweep, int evaluations_per_step,
+                                     double tolerance, double max_steps) {
   for (const SweepPoint& p : sweep.points)
     if (p.error <= tolerance) return {static_cast<double>(p.evaluations), false, true};
-  const double extrapolated = std::pow(10.0, (std::log10(tolerance) - sweep.cost.intercept) / sweep.cost.slope);
-  return {extrapolated, true, extrapolated / evaluations_per_step <= max_steps};  // NaN when nothing was fitted
+  const double extrapolated =
+      std::pow(10.0, (std::log10(tolerance) - sweep.cost.intercept) / sweep.cost.slope);
+  return {extrapolated, true,
+          extrapolated / evaluations_per_step <= max_steps};  // NaN when nothing was fitted
 }
 
 }  // namespace kit

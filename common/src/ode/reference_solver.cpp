@@ -13,11 +13,16 @@ namespace kit {
 namespace {
 const gsl_odeiv2_step_type* step_type(GslStepper stepper) {
   switch (stepper) {
-    case GslStepper::rk8pd: return gsl_odeiv2_step_rk8pd;
-    case GslStepper::rkck: return gsl_odeiv2_step_rkck;
-    case GslStepper::rkf45: return gsl_odeiv2_step_rkf45;
-    case GslStepper::rk4: return gsl_odeiv2_step_rk4;
-    case GslStepper::rk2: return gsl_odeiv2_step_rk2;
+    case GslStepper::rk8pd:
+      return gsl_odeiv2_step_rk8pd;
+    case GslStepper::rkck:
+      return gsl_odeiv2_step_rkck;
+    case GslStepper::rkf45:
+      return gsl_odeiv2_step_rkf45;
+    case GslStepper::rk4:
+      return gsl_odeiv2_step_rk4;
+    case GslStepper::rk2:
+      return gsl_odeiv2_step_rk2;
   }
   throw std::invalid_argument("unknown GSL stepper");
 }
@@ -54,16 +59,14 @@ struct GslSolver::Impl {
   }
 };
 
-GslSolver::GslSolver(std::size_t dim, Rhs f, GslOptions options)
-    : impl_(std::make_unique<Impl>()) {
+GslSolver::GslSolver(std::size_t dim, Rhs f, GslOptions options) : impl_(std::make_unique<Impl>()) {
   gsl_set_error_handler_off();  // report through return codes, never abort()
   impl_->dim = dim;
   impl_->f = std::move(f);
   impl_->options = options;
   impl_->system = {&Impl::evaluate, nullptr, dim, impl_.get()};
-  impl_->driver = gsl_odeiv2_driver_alloc_standard_new(&impl_->system, step_type(options.stepper),
-                                                       options.h0, options.atol, options.rtol,
-                                                       1.0, 0.0);
+  impl_->driver = gsl_odeiv2_driver_alloc_standard_new(&impl_->system, step_type(options.stepper), options.h0,
+                                                       options.atol, options.rtol, 1.0, 0.0);
   if (!impl_->driver) throw SolverError("GSL could not allocate an odeiv2 driver");
   gsl_odeiv2_driver_set_nmax(impl_->driver, static_cast<unsigned long>(options.max_steps));
 }
@@ -79,14 +82,13 @@ void GslSolver::advance(double& t, double* u, double t1) {
   if (impl_->pending) std::rethrow_exception(std::exchange(impl_->pending, nullptr));
   if (status == GSL_SUCCESS) return;
   if (impl_->non_finite) {
-    throw SolverError(fmt::format(
-        "GSL {} reference: the right-hand side returned NaN or Inf near t = {:.6g} s",
-        name(impl_->options.stepper), t));
+    throw SolverError(
+        fmt::format("GSL {} reference: the right-hand side returned NaN or Inf near t = {:.6g} s",
+                    name(impl_->options.stepper), t));
   }
   throw SolverError(fmt::format("GSL {} reference failed between t = {:.6g} s and {:.6g} s, "
                                 "stopped at t = {:.6g} s: {}",
-                                name(impl_->options.stepper), t_start, t1, t,
-                                gsl_strerror(status)));
+                                name(impl_->options.stepper), t_start, t1, t, gsl_strerror(status)));
 }
 
 GslStepResult gsl_single_step(const GslSolver::Rhs& f, std::size_t dim, GslStepper stepper, double t,
@@ -105,9 +107,11 @@ GslStepResult gsl_single_step(const GslSolver::Rhs& f, std::size_t dim, GslStepp
   GslStepResult out{y, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(dim))};
   Eigen::VectorXd k1(static_cast<Eigen::Index>(dim));
   f(t, y.data(), k1.data());
-  const int status = gsl_odeiv2_step_apply(step, t, h, out.y.data(), out.error.data(), k1.data(), nullptr, &system);
+  const int status =
+      gsl_odeiv2_step_apply(step, t, h, out.y.data(), out.error.data(), k1.data(), nullptr, &system);
   gsl_odeiv2_step_free(step);
-  if (status != GSL_SUCCESS) throw SolverError(fmt::format("GSL {} step failed: {}", name(stepper), gsl_strerror(status)));
+  if (status != GSL_SUCCESS)
+    throw SolverError(fmt::format("GSL {} step failed: {}", name(stepper), gsl_strerror(status)));
   return out;
 }
 

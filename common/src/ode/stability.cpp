@@ -22,7 +22,8 @@ double spectral_radius(const std::function<std::complex<double>(std::complex<dou
   return std::max(std::abs(amplification(z1)), std::abs(amplification(z2)));
 }
 
-double stability_limit(const std::function<double(double)>& radius, double h_max, int samples, double rel_tol) {
+double stability_limit(const std::function<double(double)>& radius, double h_max, int samples,
+                       double rel_tol) {
   // A tolerance of 1e-13 absorbs round-off in an exactly neutral radius (symplectic Euler's 1)
   // while still seeing weak growth such as midpoint RK2's (ωΔt)⁴/8 from ωΔt = 0.01 on.
   const auto unstable = [&](double h) { return !(radius(h) <= 1.0 + 1e-13); };
@@ -55,8 +56,9 @@ double critical_step(const std::function<bool(double)>& unstable, double stable_
   return 0.5 * (stable_dt + unstable_dt);
 }
 
-std::vector<std::array<double, 2>> level_set_points(const std::function<double(double, double)>& f, double level,
-                                                    double x0, double x1, double y0, double y1, int nx, int ny) {
+std::vector<std::array<double, 2>> level_set_points(const std::function<double(double, double)>& f,
+                                                    double level, double x0, double x1, double y0, double y1,
+                                                    int nx, int ny) {
   std::vector<double> grid(static_cast<std::size_t>((nx + 1) * (ny + 1)));
   const auto x = [&](int i) { return x0 + (x1 - x0) * i / nx; };
   const auto y = [&](int j) { return y0 + (y1 - y0) * j / ny; };
@@ -64,7 +66,9 @@ std::vector<std::array<double, 2>> level_set_points(const std::function<double(d
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) at(i, j) = f(x(i), y(j)) - level;
   std::vector<std::array<double, 2>> points;
-  const auto crossing = [&](double a, double b) { return (a < 0) != (b < 0) && std::isfinite(a) && std::isfinite(b); };
+  const auto crossing = [&](double a, double b) {
+    return (a < 0) != (b < 0) && std::isfinite(a) && std::isfinite(b);
+  };
   for (int j = 0; j <= ny; ++j) {
     for (int i = 0; i <= nx; ++i) {
       if (i < nx && crossing(at(i, j), at(i + 1, j))) {

@@ -45,7 +45,8 @@ RunEstimate roundoff_estimate(const StepSweep& doubles, const StepSweep& floats,
   return {steps, per_step, 256.0 * static_cast<double>(counts.size()), work};
 }
 
-void announce_roundoff(Report& report, const StepSweep& doubles, const StepSweep& floats, const RoundoffCosts& costs) {
+void announce_roundoff(Report& report, const StepSweep& doubles, const StepSweep& floats,
+                       const RoundoffCosts& costs) {
   announce_run(report, "roundoff", "The round-off sweep", roundoff_estimate(doubles, floats, costs),
                fmt::format("--t-end {} s, --dt-min {} s", doubles.t_end, doubles.dt_min_requested));
   roundoff_implicit_weight = costs.explicit_double > 0 ? costs.implicit_float / costs.explicit_double : 1.0;

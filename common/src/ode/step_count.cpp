@@ -11,10 +11,11 @@ long require_whole_steps(double t_end, double dt, long max_steps, double bytes_p
   const long n = whole_steps(t_end, dt);
   if (n >= 1 && n <= max_steps) return n;
   const double asked = t_end / dt, limit = static_cast<double>(max_steps);
-  const std::string estimate = asked > limit
-      ? fmt::format(" (recording them would take {}; at most {} steps, {}, are recorded)",
-                    describe_bytes(asked * bytes_per_step), max_steps, describe_bytes(limit * bytes_per_step))
-      : "";
+  const std::string estimate =
+      asked > limit ? fmt::format(" (recording them would take {}; at most {} steps, {}, are recorded)",
+                                  describe_bytes(asked * bytes_per_step), max_steps,
+                                  describe_bytes(limit * bytes_per_step))
+                    : "";
   throw UsageError(fmt::format(
       "--t-end {} s with --dt {} s is {:.6g} steps{}: --t-end must be a whole number of steps of --dt, "
       "from 1 to {} steps (from {} s to {:.6g} s with this --dt)",

@@ -59,9 +59,15 @@ StiffnessRun van_der_pol_stiffness(Report& report, double mu, const Dopri5Runner
 std::vector<Field> report_fields(const StiffnessRun& s) {
   std::vector<Field> fields = run_fields(s.run);
   fields.insert(fields.end(),
-                {{"mu", s.mu}, {"horizon", s.horizon}, {"two_periods", s.two_periods}, {"adapted", s.adapted},
-                 {"budget", s.budget}, {"predicted_steps", s.predicted_steps}, {"median_step", s.median_step},
-                 {"median_h_lambda", s.median_h_lambda}, {"boundary", dopri5_real_stability_boundary},
+                {{"mu", s.mu},
+                 {"horizon", s.horizon},
+                 {"two_periods", s.two_periods},
+                 {"adapted", s.adapted},
+                 {"budget", s.budget},
+                 {"predicted_steps", s.predicted_steps},
+                 {"median_step", s.median_step},
+                 {"median_h_lambda", s.median_h_lambda},
+                 {"boundary", dopri5_real_stability_boundary},
                  {"stability_bound", s.stability_bound},
                  {"verdict", std::string(s.stability_bound ? "stability, not accuracy, sets the step"
                                                            : "below it, so accuracy still sets the step")}});

@@ -63,7 +63,8 @@ RunOutcome run_ffmpeg(const std::filesystem::path& ffmpeg, const std::vector<std
   pid_t child = 0;
   const int spawn_error = posix_spawn(&child, ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (spawn_error != 0) return {false, fmt::format("could not start {}: {}", ffmpeg.string(), std::strerror(spawn_error))};
+  if (spawn_error != 0)
+    return {false, fmt::format("could not start {}: {}", ffmpeg.string(), std::strerror(spawn_error))};
 
   int status = 0;
   while (::waitpid(child, &status, 0) < 0)
@@ -79,12 +80,13 @@ RunOutcome run_ffmpeg(const std::filesystem::path& ffmpeg, const std::vector<std
 // One video: ffmpeg writes into a private folder that a signal removes (so an ffmpeg that
 // outlives a SIGTERM sent to the chapter alone cannot leave its file behind), with its muxer
 // named by -f; the file is renamed onto `path` only when ffmpeg succeeded.
-RunOutcome encode_one(const std::filesystem::path& ffmpeg, std::vector<std::string> arguments, const char* muxer,
-                      const std::filesystem::path& path) {
+RunOutcome encode_one(const std::filesystem::path& ffmpeg, std::vector<std::string> arguments,
+                      const char* muxer, const std::filesystem::path& path) {
   std::optional<ScratchFolder> scratch_holder;
   try {
     scratch_holder.emplace(path);
-  } catch (const std::runtime_error& error) {  // an output folder that cannot be written: a note, as for ffmpeg
+  } catch (
+      const std::runtime_error& error) {  // an output folder that cannot be written: a note, as for ffmpeg
     return {false, error.what()};
   }
   ScratchFolder& scratch = *scratch_holder;
@@ -120,9 +122,11 @@ std::filesystem::path find_ffmpeg() {
     const auto colon = rest.find(':');
     const std::string_view folder = rest.substr(0, colon);
     // An empty entry means the current folder, as for the shell.
-    const std::filesystem::path candidate = std::filesystem::path(folder.empty() ? "." : std::string(folder)) / "ffmpeg";
+    const std::filesystem::path candidate =
+        std::filesystem::path(folder.empty() ? "." : std::string(folder)) / "ffmpeg";
     std::error_code error;
-    if (std::filesystem::is_regular_file(candidate, error) && ::access(candidate.c_str(), X_OK) == 0) return candidate;
+    if (std::filesystem::is_regular_file(candidate, error) && ::access(candidate.c_str(), X_OK) == 0)
+      return candidate;
     if (colon == std::string_view::npos) return {};
     rest.remove_prefix(colon + 1);
   }
@@ -131,14 +135,19 @@ std::filesystem::path find_ffmpeg() {
 AnimationResult encode_animation(const std::filesystem::path& frame_pattern, double fps,
                                  const std::filesystem::path& mp4, const std::filesystem::path& gif) {
   if (!(fps > 0)) throw std::invalid_argument(fmt::format("encode_animation needs fps > 0, not {}", fps));
-  const std::string frames_folder = frame_pattern.parent_path().empty() ? "." : frame_pattern.parent_path().string();
+  const std::string frames_folder =
+      frame_pattern.parent_path().empty() ? "." : frame_pattern.parent_path().string();
   const std::filesystem::path ffmpeg = find_ffmpeg();
   if (ffmpeg.empty())
-    return {{}, fmt::format("ffmpeg not found: install it (./kit deps) for the MP4 and GIF; the PNG frames are kept in {}",
-                            frames_folder)};
+    return {
+        {},
+        fmt::format(
+            "ffmpeg not found: install it (./kit deps) for the MP4 and GIF; the PNG frames are kept in {}",
+            frames_folder)};
 
-  const std::vector<std::string> input{"-nostdin", "-loglevel", "error", "-y",
-                                       "-framerate", fmt::format("{}", fps), "-i", frame_pattern.string()};
+  const std::vector<std::string> input{"-nostdin", "-loglevel",           "error",
+                                       "-y",       "-framerate",          fmt::format("{}", fps),
+                                       "-i",       frame_pattern.string()};
   AnimationResult result;
   std::vector<std::string> failures;
 
@@ -153,7 +162,8 @@ AnimationResult encode_animation(const std::filesystem::path& frame_pattern, dou
 
   auto gif_arguments = input;
   // GIF holds 256 colours: one palette computed from the whole clip, then applied to each frame.
-  gif_arguments.insert(gif_arguments.end(), {"-filter_complex", "[0:v]split[a][b];[a]palettegen[p];[b][p]paletteuse"});
+  gif_arguments.insert(gif_arguments.end(),
+                       {"-filter_complex", "[0:v]split[a][b];[a]palettegen[p];[b][p]paletteuse"});
   if (const RunOutcome outcome = encode_one(ffmpeg, gif_arguments, "gif", gif); outcome.ok)
     result.files.push_back(gif);
   else
@@ -164,15 +174,17 @@ AnimationResult encode_animation(const std::filesystem::path& frame_pattern, dou
   return result;
 }
 
-void write_player(const std::filesystem::path& player, const std::string& frame_pattern, long count, double fps,
-                  int width, int height) {
-  write_file_atomic(player, fmt::format(
-      "# Plays the frames of this folder in a window: gnuplot -persist {0}\n"
-      "unset key; unset border; unset tics; set margins 0,0,0,0; set size ratio {1}.0/{2}\n"
-      "do for [i = 0:{3}] {{\n"
-      "  plot sprintf('{4}', i) binary filetype=png with rgbimage\n"
-      "  pause {5}\n"
-      "}}\n", player.filename().string(), height, width, count - 1, frame_pattern, 1.0 / fps));
+void write_player(const std::filesystem::path& player, const std::string& frame_pattern, long count,
+                  double fps, int width, int height) {
+  write_file_atomic(
+      player,
+      fmt::format("# Plays the frames of this folder in a window: gnuplot -persist {0}\n"
+                  "unset key; unset border; unset tics; set margins 0,0,0,0; set size ratio {1}.0/{2}\n"
+                  "do for [i = 0:{3}] {{\n"
+                  "  plot sprintf('{4}', i) binary filetype=png with rgbimage\n"
+                  "  pause {5}\n"
+                  "}}\n",
+                  player.filename().string(), height, width, count - 1, frame_pattern, 1.0 / fps));
 }
 
 std::string show_player(const std::filesystem::path& player) {

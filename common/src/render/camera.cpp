@@ -21,12 +21,14 @@ double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[
 Pinhole::Pinhole(const Camera& camera, int width, int height)
     : eye_(camera.position), width_(width), height_(height) {
   if (width < 1 || height < 1)
-    throw std::invalid_argument(fmt::format("a camera image needs at least 1 x 1 pixels, not {} x {}", width, height));
+    throw std::invalid_argument(
+        fmt::format("a camera image needs at least 1 x 1 pixels, not {} x {}", width, height));
   if (!(camera.fov_deg > 0 && camera.fov_deg < 180))
     throw UsageError(fmt::format("camera fov_deg must be in (0, 180) degrees, not {}", camera.fov_deg));
   const Vec3 view{camera.target[0] - eye_[0], camera.target[1] - eye_[1], camera.target[2] - eye_[2]};
   const double distance = std::sqrt(dot(view, view));
-  if (!(distance > 0)) throw UsageError("camera position and target coincide: the camera has no view direction");
+  if (!(distance > 0))
+    throw UsageError("camera position and target coincide: the camera has no view direction");
   forward_ = view * (1 / distance);
   // Right is horizontal (forward × world up); looking straight up or down it is undefined, and
   // world x is taken instead.

@@ -22,14 +22,16 @@ RayHit backdrop_hit(const Pinhole& camera, const Vec3& ray, const std::optional<
   const double t = (*ground_height - eye.y()) / ray.y();
   if (!(t >= Pinhole::near_depth)) return hit;
   const Vec3 p = eye + t * ray;
-  const bool light_square = (long(std::floor(p.x() / ground_checker_square)) +
-                             long(std::floor(p.z() / ground_checker_square))) % 2 == 0;
+  const bool light_square =
+      (long(std::floor(p.x() / ground_checker_square)) + long(std::floor(p.z() / ground_checker_square))) %
+          2 ==
+      0;
   // A pixel spans about t/F metres across (more at grazing angles); once a square is only a few
   // pixels wide the checker would alias, so it fades to its mean and then into the sky.
   const double footprint = t / camera.focal_px() / std::max(0.05, std::abs(ray.y()) * inv_ray_length);
   const double contrast = std::clamp(1.5 - 3 * footprint / ground_checker_square, 0.0, 1.0);
   const Colour ground = mix_colours(mix_colours(ground_light, ground_dark, 0.5),
-                                   light_square ? ground_light : ground_dark, contrast);
+                                    light_square ? ground_light : ground_dark, contrast);
   const double shade = in_shadow && in_shadow(p) ? cloth_ambient : light_intensity({0, 1, 0});
   const double haze = std::clamp(footprint / (4 * ground_checker_square), 0.0, 1.0);
   return {mix_colours(scale_colour(ground, shade), cloth_sky_bottom, haze), t};
@@ -51,7 +53,8 @@ double light_intensity(const Vec3& unit_normal) {
 // Declared with the cloth's palette (cloth_renderer.hpp); defined here, next to the loop that
 // calls it for every pixel, so that it is inlined there.
 Colour cloth_sky(double elevation) {
-  return mix_colours(cloth_sky_bottom, cloth_sky_top, std::clamp(elevation / 0.5, 0.0, 1.0));  // sin 30° = 0.5
+  return mix_colours(cloth_sky_bottom, cloth_sky_top,
+                     std::clamp(elevation / 0.5, 0.0, 1.0));  // sin 30° = 0.5
 }
 
 void draw_backdrop(const Pinhole& camera, const std::optional<double>& ground_height,
@@ -69,8 +72,10 @@ void draw_backdrop(const Pinhole& camera, const std::optional<double>& ground_he
         canvas.depth_at(px, py) = float(hit.depth);
       }
   };
-  if (in_front) cast_every_ray(in_front);
-  else cast_every_ray([](const Vec3&, RayHit&) {});
+  if (in_front)
+    cast_every_ray(in_front);
+  else
+    cast_every_ray([](const Vec3&, RayHit&) {});
 }
 
 std::optional<ScreenVertex> screen_vertex(const Pinhole& camera, const Vec3& point) {

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/SVD>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <Eigen/SVD>
 
 namespace kit {
 namespace {
@@ -57,8 +57,12 @@ RigidShape cylinder_shape(double mass, double radius, double height) {
   require_positive("a cylinder's radius [m]", radius);
   require_positive("a cylinder's height [m]", height);
   const double side = (3 * radius * radius + height * height) / 12.0 * mass;
-  RigidShape shape{"cylinder", mass, Vec3(side, mass * radius * radius / 2, side).asDiagonal(), {},
-                   {{Vec3::Zero(), Vec3(2 * radius, height, 2 * radius)}}, {}};
+  RigidShape shape{"cylinder",
+                   mass,
+                   Vec3(side, mass * radius * radius / 2, side).asDiagonal(),
+                   {},
+                   {{Vec3::Zero(), Vec3(2 * radius, height, 2 * radius)}},
+                   {}};
   constexpr int rim = 16;  // the corners of a 16-sided prism: the rims at y = ±h/2
   for (int k = 0; k < rim; ++k) {
     const double angle = 2 * M_PI * k / rim;
@@ -78,8 +82,12 @@ RigidShape t_handle_shape(double mass) {
   // centre of mass is the origin of the body frame.
   const Vec3 bar_centre = Vec3::Zero(), stem_centre(0, -(bar_sides.y() + stem_sides.y()) / 2, 0);
   const Vec3 centre_of_mass = (bar_mass * bar_centre + stem_mass * stem_centre) / mass;
-  RigidShape shape{"t-handle", mass, Mat3::Zero(), {},
-                   {{bar_centre - centre_of_mass, bar_sides}, {stem_centre - centre_of_mass, stem_sides}}, {}};
+  RigidShape shape{"t-handle",
+                   mass,
+                   Mat3::Zero(),
+                   {},
+                   {{bar_centre - centre_of_mass, bar_sides}, {stem_centre - centre_of_mass, stem_sides}},
+                   {}};
   shape.inertia = moved_inertia(box_inertia(bar_mass, bar_sides), bar_mass, shape.parts[0].centre) +
                   moved_inertia(box_inertia(stem_mass, stem_sides), stem_mass, shape.parts[1].centre);
   for (const auto& part : shape.parts) add_corners(shape.corners, part);
@@ -137,7 +145,8 @@ double orthonormality_error(const Mat3& R) { return (R.transpose() * R - Mat3::I
 Mat3 nearest_rotation(const Mat3& R) {
   Eigen::JacobiSVD<Mat3> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Mat3 U = svd.matrixU();
-  if ((U * svd.matrixV().transpose()).determinant() < 0) U.col(2) *= -1;  // a reflection: flip the weakest axis
+  if ((U * svd.matrixV().transpose()).determinant() < 0)
+    U.col(2) *= -1;  // a reflection: flip the weakest axis
   return U * svd.matrixV().transpose();
 }
 

@@ -36,7 +36,9 @@ class BodyVelocity {
   }
 
  private:
-  Vec3 world_inverse_inertia(const Vec3& v) const { return R_ * (shape_.inverse_inertia * (R_.transpose() * v)); }
+  Vec3 world_inverse_inertia(const Vec3& v) const {
+    return R_ * (shape_.inverse_inertia * (R_.transpose() * v));
+  }
   Vec3 omega() const { return world_inverse_inertia(L_); }
   const RigidShape& shape_;
   Mat3 R_;
@@ -76,7 +78,8 @@ double lowest_point(const RigidShape& shape, const RigidState& state) {
   return lowest;
 }
 
-ContactEvent resolve_ground_contact(const RigidShape& shape, RigidState& state, const GroundContact& contact) {
+ContactEvent resolve_ground_contact(const RigidShape& shape, RigidState& state,
+                                    const GroundContact& contact) {
   ContactEvent event;
   BodyVelocity body(shape, state);
   std::vector<CornerContact> corners;

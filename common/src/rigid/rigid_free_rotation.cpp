@@ -46,8 +46,9 @@ double FreeRotation::period() const {
 
 FreeRotation free_rotation(const Vec3& moments, const Vec3& omega) {
   if (!(moments[0] > 0 && moments[0] <= moments[1] && moments[1] <= moments[2]))
-    throw std::invalid_argument(fmt::format("principal moments must be positive and ascending, not ({}, {}, {})",
-                                            moments[0], moments[1], moments[2]));
+    throw std::invalid_argument(
+        fmt::format("principal moments must be positive and ascending, not ({}, {}, {})", moments[0],
+                    moments[1], moments[2]));
   FreeRotation motion;
   motion.moments = moments;
   motion.energy = 0.5 * omega.dot(moments.cwiseProduct(omega));

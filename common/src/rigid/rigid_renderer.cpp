@@ -19,13 +19,13 @@ namespace kit {
 namespace {
 
 // Saturated enough to tell the parts apart under any light, and none close to the ground's greys.
-constexpr std::array<Colour, 4> part_colours{{{0.90, 0.52, 0.24}, {0.30, 0.52, 0.86}, {0.36, 0.70, 0.40},
-                                             {0.62, 0.62, 0.66}}};
-constexpr double camera_fov_deg = 40;             // vertical [deg]
-constexpr double camera_azimuth_deg = 25;         // to the right of +z, seen from above [deg]
-constexpr double camera_elevation_deg = 20;       // above the horizontal [deg]
-constexpr double camera_margin = 1.05;            // the region's sphere fills 95 % of the narrower field
-constexpr double smallest_region = 0.1;           // [m] a body with no size still gets a view
+constexpr std::array<Colour, 4> part_colours{
+    {{0.90, 0.52, 0.24}, {0.30, 0.52, 0.86}, {0.36, 0.70, 0.40}, {0.62, 0.62, 0.66}}};
+constexpr double camera_fov_deg = 40;        // vertical [deg]
+constexpr double camera_azimuth_deg = 25;    // to the right of +z, seen from above [deg]
+constexpr double camera_elevation_deg = 20;  // above the horizontal [deg]
+constexpr double camera_margin = 1.05;       // the region's sphere fills 95 % of the narrower field
+constexpr double smallest_region = 0.1;      // [m] a body with no size still gets a view
 
 double degrees_to_radians(double degrees) { return degrees * std::numbers::pi / 180; }
 
@@ -33,7 +33,8 @@ double degrees_to_radians(double degrees) { return degrees * std::numbers::pi / 
 // the farthest corner of each part is at most |centre| + |sides|/2 away.
 double bounding_radius(const RigidShape& shape) {
   double radius = 0;
-  for (const BoxPart& part : shape.parts) radius = std::max(radius, part.centre.norm() + 0.5 * part.sides.norm());
+  for (const BoxPart& part : shape.parts)
+    radius = std::max(radius, part.centre.norm() + 0.5 * part.sides.norm());
   return radius;
 }
 
@@ -97,7 +98,8 @@ class BodyShadow {
 
 Colour rigid_part_colour(std::size_t part) { return part_colours[part % part_colours.size()]; }
 
-Image render_rigid(const RigidShape& shape, const RigidState& state, const Camera& view, int width, int height) {
+Image render_rigid(const RigidShape& shape, const RigidState& state, const Camera& view, int width,
+                   int height) {
   const Pinhole camera(view, width, height);
   DepthCanvas canvas(width, height, cloth_sky_top);
   const BodyShadow shadow(shape, state);
@@ -124,7 +126,8 @@ Image render_rigid(const RigidShape& shape, const RigidState& state, const Camer
 
 Camera rigid_camera(const RigidShape& shape, const std::vector<RigidState>& frames, bool with_ground,
                     double aspect) {
-  if (frames.empty()) throw std::invalid_argument("a rigid body's camera needs at least one frame to look at");
+  if (frames.empty())
+    throw std::invalid_argument("a rigid body's camera needs at least one frame to look at");
   if (!(aspect > 0) || !std::isfinite(aspect))
     throw std::invalid_argument(fmt::format("an image's aspect must be a positive number, not {}", aspect));
   Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
@@ -143,7 +146,8 @@ Camera rigid_camera(const RigidShape& shape, const std::vector<RigidState>& fram
   const double half_vertical = degrees_to_radians(camera_fov_deg / 2);
   const double half_field = std::min(half_vertical, std::atan(aspect * std::tan(half_vertical)));
   const double distance = camera_margin * extent / std::sin(half_field);
-  const double azimuth = degrees_to_radians(camera_azimuth_deg), elevation = degrees_to_radians(camera_elevation_deg);
+  const double azimuth = degrees_to_radians(camera_azimuth_deg),
+               elevation = degrees_to_radians(camera_elevation_deg);
   const Vec3 towards_eye(std::sin(azimuth) * std::cos(elevation), std::sin(elevation),
                          std::cos(azimuth) * std::cos(elevation));
   const Vec3 eye = centre + distance * towards_eye;

@@ -7,11 +7,15 @@ namespace kit {
 std::string exercises_of(RotationIntegrator integrator) {
   switch (integrator) {
     case RotationIntegrator::euler_matrix:
-    case RotationIntegrator::euler_polar: return "ex 8.3, 8.1";
-    case RotationIntegrator::euler_quaternion: return "ex 8.3, 8.2";
-    case RotationIntegrator::exponential_map: return "ex 8.3, 8.4";
+    case RotationIntegrator::euler_polar:
+      return "ex 8.3, 8.1";
+    case RotationIntegrator::euler_quaternion:
+      return "ex 8.3, 8.2";
+    case RotationIntegrator::exponential_map:
+      return "ex 8.3, 8.4";
     case RotationIntegrator::midpoint:
-    case RotationIntegrator::rk4: break;
+    case RotationIntegrator::rk4:
+      break;
   }
   return "";
 }

@@ -10,9 +10,12 @@ namespace kit {
 int order(Integrator i) {
   switch (i) {
     case Integrator::explicit_euler:
-    case Integrator::symplectic_euler: return 1;
-    case Integrator::midpoint: return 2;
-    case Integrator::exact: return 0;
+    case Integrator::symplectic_euler:
+      return 1;
+    case Integrator::midpoint:
+      return 2;
+    case Integrator::exact:
+      return 0;
   }
   return 0;
 }
@@ -79,9 +82,12 @@ void ParticleUpdate::move(Particles& ps, double h) {
   float* v[] = {ps.vx.data(), ps.vy.data(), ps.vz.data()};
   for (int axis = 0; axis < 3; ++axis) {
     const AxisStep a = axis_step(integrator_, drag_, h, gravity_[axis], wind_[axis]);
-    if (has_drag_) move_axis<Motion::drag>(x[axis], v[axis], n, a);
-    else if (has_gravity_ && gravity_[axis] != 0) move_axis<Motion::accelerate>(x[axis], v[axis], n, a);
-    else move_axis<Motion::drift>(x[axis], v[axis], n, a);
+    if (has_drag_)
+      move_axis<Motion::drag>(x[axis], v[axis], n, a);
+    else if (has_gravity_ && gravity_[axis] != 0)
+      move_axis<Motion::accelerate>(x[axis], v[axis], n, a);
+    else
+      move_axis<Motion::drift>(x[axis], v[axis], n, a);
   }
   work_.particle_steps += long(n);
   if (has_gravity_) work_.gravity += long(n);
@@ -102,7 +108,8 @@ void ParticleUpdate::change_attributes(Particles& ps, double h) {
     work_.colour += long(n);
   }
   if (has_alpha_rate_) {
-    for (std::size_t i = 0; i < n; ++i) ps.alpha[i] = std::clamp(ps.alpha[i] + rates_[e[i]].alpha * dt, 0.f, 1.f);
+    for (std::size_t i = 0; i < n; ++i)
+      ps.alpha[i] = std::clamp(ps.alpha[i] + rates_[e[i]].alpha * dt, 0.f, 1.f);
     work_.alpha += long(n);
   }
   if (has_size_rate_) {

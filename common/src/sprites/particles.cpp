@@ -24,7 +24,8 @@ bool Particles::add(const ParticleSpawn& s) {
 void Particles::swap_remove(std::size_t i) {
   const std::size_t last = --count_;
   if (i == last) return;
-  for (auto* a : {&x, &y, &z, &vx, &vy, &vz, &age, &lifetime, &size_m, &r, &g, &b, &alpha}) (*a)[i] = (*a)[last];
+  for (auto* a : {&x, &y, &z, &vx, &vy, &vz, &age, &lifetime, &size_m, &r, &g, &b, &alpha})
+    (*a)[i] = (*a)[last];
   emitter[i] = emitter[last];
   id[i] = id[last];
 }

@@ -24,7 +24,9 @@ struct TileTarget {
   static constexpr int stride = 4;
   SpriteTile& tile;
   float* row(int column, int row_index) { return tile.at(column - tile.x0, row_index - tile.y0); }
-  void put(float* pixel, Rgb c, float alpha) const { pixel[0] = c.r, pixel[1] = c.g, pixel[2] = c.b, pixel[3] = alpha; }
+  void put(float* pixel, Rgb c, float alpha) const {
+    pixel[0] = c.r, pixel[1] = c.g, pixel[2] = c.b, pixel[3] = alpha;
+  }
 };
 }  // namespace
 
@@ -98,8 +100,8 @@ long SpriteRenderer::draw(const Sprite& sprite, const Particles& particles, Imag
   // The mip level whose texels are about one pixel: log2(texels per pixel), rounded down, so a
   // sprite of a pixel or less shows the texture's average (its 1 × 1 level).
   const double texels_per_pixel = mips.front().width / sprite.edge;
-  const auto level = static_cast<std::size_t>(std::clamp(std::floor(std::log2(std::max(1.0, texels_per_pixel))), 0.0,
-                                                         static_cast<double>(mips.size() - 1)));
+  const auto level = static_cast<std::size_t>(std::clamp(
+      std::floor(std::log2(std::max(1.0, texels_per_pixel))), 0.0, static_cast<double>(mips.size() - 1)));
   const Texture& texture = mips[level];
 
   // The square [x0, x1) × [y0, y1) in continuous pixel coordinates, clipped to the image.
@@ -125,7 +127,8 @@ long SpriteRenderer::draw(const Sprite& sprite, const Particles& particles, Imag
     const double left = column_begin + k;
     const double t = std::clamp((left + 0.5 - x0) * texels_per_px_x - 0.5, 0.0, texture.width - 1.0);
     const int t0 = static_cast<int>(t);
-    columns_[static_cast<std::size_t>(k)] = {t0, std::min(t0 + 1, texture.width - 1), static_cast<float>(t - t0),
+    columns_[static_cast<std::size_t>(k)] = {t0, std::min(t0 + 1, texture.width - 1),
+                                             static_cast<float>(t - t0),
                                              static_cast<float>(std::min(left + 1, x1) - std::max(left, x0))};
   }
   const Rgb tint{particles.r[i], particles.g[i], particles.b[i]};

@@ -39,11 +39,13 @@ std::vector<double> emissions_per_frame(const SpriteScene& scene) {
 double expected_alive(const SpriteScene& scene, const SpriteRunOptions& options) {
   const std::vector<double> rate = emissions_per_frame(scene);
   double alive = 0;
-  for (std::size_t i = 0; i < rate.size(); ++i) alive += rate[i] * scene.emitters[i].lifetime.mean * options.fps;
+  for (std::size_t i = 0; i < rate.size(); ++i)
+    alive += rate[i] * scene.emitters[i].lifetime.mean * options.fps;
   return std::min(alive, double(options.max_particles));
 }
 
-SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOptions& options, SpriteKernels kernels) {
+SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOptions& options,
+                                 SpriteKernels kernels) {
   SpriteRecording rec;
   rec.warmup_frames = options.warmup_frames;
   ProgressTask::set_total(double(options.warmup_frames + options.frames));  // the section's bar counts frames
@@ -58,8 +60,10 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
   }
   Image image(options.width, options.height, scene.background);
   // Paths: every stride-th particle of the first half of the run's expected emissions.
-  const double per_frame = expected_alive(scene, options) / std::max(1.0, options.fps * scene.emitters[0].lifetime.mean);
-  const auto stride = std::uint32_t(std::max(1.0, std::floor(per_frame * double(options.frames) / 2 / options.paths)));
+  const double per_frame =
+      expected_alive(scene, options) / std::max(1.0, options.fps * scene.emitters[0].lifetime.mean);
+  const auto stride =
+      std::uint32_t(std::max(1.0, std::floor(per_frame * double(options.frames) / 2 / options.paths)));
   std::map<std::uint32_t, ParticlePath> paths;
   for (long k = 0; k < options.warmup_frames + options.frames; ++k) {
     const long f = k - options.warmup_frames;  // the rendered frame's number; negative while warming up
@@ -97,8 +101,9 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
 
 std::optional<AnimationOutputs> write_animation(const SpriteRecording& rec, const SpriteRunOptions& options,
                                                 const std::filesystem::path& out) {
-  return finish_animation(rec.rendered, options.fps,
-                          {out / "animation.mp4", out / "animation.gif", out / "play.gp", out / "contact_sheet.png"});
+  return finish_animation(
+      rec.rendered, options.fps,
+      {out / "animation.mp4", out / "animation.gif", out / "play.gp", out / "contact_sheet.png"});
 }
 
 }  // namespace kit

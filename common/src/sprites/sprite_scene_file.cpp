@@ -32,7 +32,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Bounds that keep every later product finite in float32 and double: a scene is small (metres,
 // seconds), and a value beyond these is a typo, not a scene.
-constexpr double max_coordinate = 1e6;  // [m]
+constexpr double max_coordinate = 1e6;       // [m]
 constexpr double max_rate_of_change = 1000;  // colour, alpha [1/s], size [m/s], wind [m/s], g [m/s²]
 
 /// A Reeves attribute: a number (variance 0) or { mean, variance }. `mean` bounds the mean; when
@@ -106,8 +106,8 @@ void read_death(const Reader& r, const Section& s, DeathRules& death) {
     for (std::size_t i = 0; i < 3; ++i)
       if (!((*lo)[i] < (*hi)[i]))
         r.bad(*s.find("region"), s.key("region"),
-              fmt::format("min must be < max in every component, but {} min = {} >= max = {}", "xyz"[i], (*lo)[i],
-                          (*hi)[i]));
+              fmt::format("min must be < max in every component, but {} min = {} >= max = {}", "xyz"[i],
+                          (*lo)[i], (*hi)[i]));
     death.region = std::array<Vec3, 2>{to_vec3(*lo), to_vec3(*hi)};
   }
 }
@@ -120,9 +120,11 @@ bool is_png_path(const std::string& s) {
 }
 
 Emitter read_emitter(const Reader& r, const Section& s, EmitterSource& source) {
-  s.only({"name", "shape", "position", "axis", "radius", "angle_deg", "rate", "speed", "lifetime", "size", "alpha",
-          "colour", "colour_variance", "colour_rate", "alpha_rate", "size_rate", "blend", "texture", "burst_only",
-          "on_death", "inherit_velocity", "first_frame", "last_frame"});
+  s.only(
+      {"name",        "shape",     "position", "axis",    "radius",     "angle_deg",       "rate",
+       "speed",       "lifetime",  "size",     "alpha",   "colour",     "colour_variance", "colour_rate",
+       "alpha_rate",  "size_rate", "blend",    "texture", "burst_only", "on_death",        "inherit_velocity",
+       "first_frame", "last_frame"});
   Emitter e;
   const auto name = s.string("name");
   if (!name) s.missing("name", "every emitter has a name (on_death refers to emitters by name)");
@@ -138,7 +140,8 @@ Emitter read_emitter(const Reader& r, const Section& s, EmitterSource& source) {
   }
   e.radius = s.real("radius", between(0, max_coordinate)).value_or(e.radius);
   if ((e.shape == EmitterShape::disc || e.shape == EmitterShape::sphere) && !(e.radius > 0)) {
-    const std::string why = fmt::format("a {} emitter needs a radius > 0 [m]", emitter_shape_names.flag(e.shape));
+    const std::string why =
+        fmt::format("a {} emitter needs a radius > 0 [m]", emitter_shape_names.flag(e.shape));
     if (const auto* n = s.find("radius")) r.bad(*n, s.key("radius"), why);
     s.missing("radius", why);
   }
@@ -166,7 +169,8 @@ Emitter read_emitter(const Reader& r, const Section& s, EmitterSource& source) {
       // Relative to the scene, so that a scene and its images move together.
       e.texture = (std::filesystem::path(r.file()).parent_path() / *texture).lexically_normal().string();
     } else {
-      r.bad(*s.find("texture"), s.key("texture"), "must be soft, spark, flake, smoke or a path ending in .png");
+      r.bad(*s.find("texture"), s.key("texture"),
+            "must be soft, spark, flake, smoke or a path ending in .png");
     }
   }
 
@@ -190,7 +194,8 @@ Emitter read_emitter(const Reader& r, const Section& s, EmitterSource& source) {
 /// Resolves on_death names to indices and checks what no single emitter can: no emitter bursts
 /// itself, directly or through others (each burst's deaths would start the next: the count grows
 /// without end), and every burst_only emitter is some emitter's on_death (else it never emits).
-void link_emitters(const Reader& r, std::vector<Emitter>& emitters, const std::vector<EmitterSource>& sources) {
+void link_emitters(const Reader& r, std::vector<Emitter>& emitters,
+                   const std::vector<EmitterSource>& sources) {
   const auto index_of = [&](const std::string& name) -> std::optional<int> {
     for (std::size_t j = 0; j < emitters.size(); ++j)
       if (emitters[j].name == name) return static_cast<int>(j);
@@ -205,7 +210,8 @@ void link_emitters(const Reader& r, std::vector<Emitter>& emitters, const std::v
     const auto j = index_of(sources[i].on_death_name);
     if (!j) r.bad(*sources[i].on_death, key, fmt::format("no emitter has that name (emitters: {})", names));
     if (static_cast<std::size_t>(*j) == i)
-      r.bad(*sources[i].on_death, key, "an emitter may not burst itself: each burst's deaths would start another");
+      r.bad(*sources[i].on_death, key,
+            "an emitter may not burst itself: each burst's deaths would start another");
     emitters[i].on_death = *j;
   }
   for (std::size_t i = 0; i < emitters.size(); ++i) {
@@ -236,7 +242,8 @@ void read_emitters(const Reader& r, const Section& root, SpriteScene& scene) {
   const auto* n = root.find("emitter");
   if (!n) root.missing("emitter", "a scene needs at least one [[emitter]]");
   const auto* list = n->as_array();
-  if (list && list->empty()) r.bad(*n, "emitter", fmt::format("expected 1 to {} emitters, got 0", max_emitters));
+  if (list && list->empty())
+    r.bad(*n, "emitter", fmt::format("expected 1 to {} emitters, got 0", max_emitters));
   if (!list || !list->is_array_of_tables())
     r.bad(*n, "emitter", fmt::format("expected an array of tables ([[emitter]]), got {}", kind(*n)));
   if (list->size() > max_emitters)
@@ -262,7 +269,8 @@ SpriteScene parse_sprite_scene(std::string_view text, std::string_view file_name
   const toml::table document = r.parse(text);
 
   const Section root(r, document, "");
-  root.only({"name", "frames", "fps", "warmup", "max_particles", "background", "camera", "forces", "death", "emitter"});
+  root.only({"name", "frames", "fps", "warmup", "max_particles", "background", "camera", "forces", "death",
+             "emitter"});
   SpriteScene scene;
   scene.file = std::string(file_name);
   const auto name = root.string("name");

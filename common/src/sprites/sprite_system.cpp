@@ -21,8 +21,10 @@ long SpriteSystem::emit(std::size_t index, long count, const Death* parent) {
   for (long k = 0; k < count; ++k) {
     ParticleSpawn p = kernels_.sample(e, std::uint8_t(index), random_);
     if (p.emitter != index)  // the rates, textures and bursts are looked up by this index
-      throw std::logic_error(fmt::format("ex 5.1: sample_particle(emitter {0}) returned a particle of emitter {1}; "
-                                         "set its emitter to {0}", index, p.emitter));
+      throw std::logic_error(
+          fmt::format("ex 5.1: sample_particle(emitter {0}) returned a particle of emitter {1}; "
+                      "set its emitter to {0}",
+                      index, p.emitter));
     if (parent) {  // a burst starts where its parent died, with part of its velocity
       const float keep = float(e.inherit_velocity);
       p.x += parent->x - float(e.position[0]), p.y += parent->y - float(e.position[1]);
@@ -56,14 +58,18 @@ FrameCounts SpriteSystem::step() {
   deaths_.clear();
   update_.step(particles_, dt_);
   const long alive = long(particles_.size());
-  c.died = kernels_.age_and_kill(particles_, float(dt_), update_.death_rules(), update_.bursts_on_death(), deaths_);
+  c.died = kernels_.age_and_kill(particles_, float(dt_), update_.death_rules(), update_.bursts_on_death(),
+                                 deaths_);
   update_.count_deaths(alive, c.died);
   for (const Death& d : deaths_) {
     if (d.emitter >= scene_.emitters.size() || !scene_.emitters[d.emitter].on_death)
-      throw std::logic_error(fmt::format("ex 5.2: age_and_kill recorded a death of emitter {}, which does not "
-                                         "burst; record only those with bursts_on_death[emitter]", d.emitter));
+      throw std::logic_error(
+          fmt::format("ex 5.2: age_and_kill recorded a death of emitter {}, which does not "
+                      "burst; record only those with bursts_on_death[emitter]",
+                      d.emitter));
     const int target = *scene_.emitters[d.emitter].on_death;
-    c.emitted += emit(std::size_t(target), emission_count(scene_.emitters[std::size_t(target)].rate, random_), &d);
+    c.emitted +=
+        emit(std::size_t(target), emission_count(scene_.emitters[std::size_t(target)].rate, random_), &d);
   }
   c.dropped = dropped_this_frame_;
   totals_.emitted += c.emitted, totals_.dead += c.died, totals_.dropped += c.dropped;

@@ -83,7 +83,8 @@ double flake(double x, double y) {
       const double bx = at * ux, by = at * uy;
       for (double side : {-1.0, 1.0}) {
         const double b = a + side * std::numbers::pi / 6;
-        nearest = std::min(nearest, segment_distance(x, y, bx, by, bx + length * std::cos(b), by + length * std::sin(b)));
+        nearest = std::min(
+            nearest, segment_distance(x, y, bx, by, bx + length * std::cos(b), by + length * std::sin(b)));
       }
     }
   }
@@ -95,8 +96,8 @@ double flake(double x, double y) {
 // Value noise on an integer lattice: a fixed integer hash (no rand(), no seed), so every run
 // and every machine draws the same smoke.
 double lattice_value(int i, int j, std::uint32_t octave) {
-  std::uint32_t h = static_cast<std::uint32_t>(i) * 0x8da6b343u ^ static_cast<std::uint32_t>(j) * 0xd8163841u ^
-                    octave * 0xcb1ab31fu;
+  std::uint32_t h = static_cast<std::uint32_t>(i) * 0x8da6b343u ^
+                    static_cast<std::uint32_t>(j) * 0xd8163841u ^ octave * 0xcb1ab31fu;
   h ^= h >> 16, h *= 0x7feb352du, h ^= h >> 15, h *= 0x846ca68bu, h ^= h >> 16;
   return static_cast<double>(h) / 4294967295.0;
 }
@@ -130,8 +131,8 @@ Texture builtin_texture(std::string_view name) {
   if (name == "spark") return white_texture(spark);
   if (name == "flake") return white_texture(flake);
   if (name == "smoke") return white_texture(smoke);
-  throw UsageError(fmt::format("unknown texture '{}': the built-in textures are {}, or give a PNG file's path", name,
-                               builtin_list()));
+  throw UsageError(fmt::format(
+      "unknown texture '{}': the built-in textures are {}, or give a PNG file's path", name, builtin_list()));
 }
 
 Texture texture_for(const std::string& name_or_png_path) {
@@ -141,8 +142,9 @@ Texture texture_for(const std::string& name_or_png_path) {
   std::string extension = path.extension().string();
   for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (extension != ".png")
-    throw UsageError(fmt::format("unknown texture '{}': the built-in textures are {}, or give a PNG file's path",
-                                 name_or_png_path, builtin_list()));
+    throw UsageError(
+        fmt::format("unknown texture '{}': the built-in textures are {}, or give a PNG file's path",
+                    name_or_png_path, builtin_list()));
   try {
     const Rgba8 png = read_png(path);
     Texture t{png.width, png.height, std::vector<float>(png.rgba.size())};
@@ -166,12 +168,14 @@ std::vector<Texture> mip_levels(const Texture& texture) {
         double premultiplied[3] = {0, 0, 0}, alpha = 0;
         for (int dj = 0; dj < 2; ++dj)
           for (int di = 0; di < 2; ++di) {
-            const float* p = fine.texel(std::min(2 * i + di, fine.width - 1), std::min(2 * j + dj, fine.height - 1));
+            const float* p =
+                fine.texel(std::min(2 * i + di, fine.width - 1), std::min(2 * j + dj, fine.height - 1));
             for (int k = 0; k < 3; ++k) premultiplied[k] += static_cast<double>(p[k]) * p[3];
             alpha += p[3];
           }
-        float* q = coarse.rgba.data() + 4 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(coarse.width) +
-                                             static_cast<std::size_t>(i));
+        float* q =
+            coarse.rgba.data() + 4 * (static_cast<std::size_t>(j) * static_cast<std::size_t>(coarse.width) +
+                                      static_cast<std::size_t>(i));
         for (int k = 0; k < 3; ++k) q[k] = alpha > 0 ? static_cast<float>(premultiplied[k] / alpha) : 0.0f;
         q[3] = static_cast<float>(alpha / 4);
       }

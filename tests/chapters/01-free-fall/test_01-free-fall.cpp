@@ -15,7 +15,9 @@ namespace {
 const std::string binary = KIT_CHAPTER_BINARY;
 
 // The arguments as given (each test names its own --out), and the process too: stderr is checked.
-kit::test::ChapterRun run_chapter(const std::vector<std::string>& args) { return kit::test::run_chapter(binary, args); }
+kit::test::ChapterRun run_chapter(const std::vector<std::string>& args) {
+  return kit::test::run_chapter(binary, args);
+}
 }  // namespace
 
 TEST_CASE("chapter 1 reports both Euler errors as exactly k/2·Δt²·|g|, explicit above, implicit below") {
@@ -37,12 +39,15 @@ TEST_CASE("chapter 1 reports both Euler errors as exactly k/2·Δt²·|g|, expli
     INFO("k = " << k);
     CHECK(t == Approx(k * dt).epsilon(1e-14));
     CHECK(double(sample["exact"]) == Approx(exact).epsilon(1e-14));
-    CHECK(double(sample["explicit"]) == Approx(x0 + k * dt * v0 + 0.5 * k * (k - 1) * dt * dt * g).epsilon(1e-12));
-    CHECK(double(sample["implicit"]) == Approx(x0 + k * dt * v0 + 0.5 * k * (k + 1) * dt * dt * g).epsilon(1e-12));
+    CHECK(double(sample["explicit"]) ==
+          Approx(x0 + k * dt * v0 + 0.5 * k * (k - 1) * dt * dt * g).epsilon(1e-12));
+    CHECK(double(sample["implicit"]) ==
+          Approx(x0 + k * dt * v0 + 0.5 * k * (k + 1) * dt * dt * g).epsilon(1e-12));
     CHECK(double(sample["explicit_loop"]) == Approx(loop.at(std::size_t(k))).epsilon(1e-13));
     CHECK(double(sample["explicit"]) == Approx(loop.at(std::size_t(k))).epsilon(1e-13));
     // The printed prediction is the gap that loop really leaves, not the chapter's own formula.
-    CHECK(double(sample["predicted_error"]) == Approx(loop.at(std::size_t(k)) - exact).epsilon(1e-9).margin(1e-13));
+    CHECK(double(sample["predicted_error"]) ==
+          Approx(loop.at(std::size_t(k)) - exact).epsilon(1e-9).margin(1e-13));
     if (k > 0) {
       // 1e-9 relative, as the issue asks; sign: g < 0, so explicit is above (+), implicit below (−).
       CHECK(double(sample["explicit_error"]) == Approx(predicted).epsilon(1e-9));
@@ -57,7 +62,8 @@ TEST_CASE("chapter 1 reports both Euler errors as exactly k/2·Δt²·|g|, expli
 
 TEST_CASE("chapter 1 with g > 0 swaps the sides: explicit below, implicit above") {
   kit::test::TempDir out("ch01-g");
-  const auto run = run_chapter({"--json", "--no-plot", "--out", out.path().string(), "--g", "4", "--dt-min", "1e-5"});
+  const auto run =
+      run_chapter({"--json", "--no-plot", "--out", out.path().string(), "--g", "4", "--dt-min", "1e-5"});
   const auto& last = run.summary["samples"].back();
   CHECK(double(last["explicit_error"]) < 0);
   CHECK(double(last["implicit_error"]) > 0);
@@ -68,8 +74,10 @@ TEST_CASE("chapter 1 measures global order 1 and local order 2 within 0.05, on t
   kit::test::TempDir out("ch01-order");
   const auto run = run_chapter({"--json", "--no-plot", "--out", out.path().string(), "--dt-min", "1e-5"});
   const json& c = run.summary["convergence"];
-  for (const char* key : {"global_explicit", "global_implicit"}) CHECK(double(c["slopes"][key]) == Approx(1.0).margin(0.05));
-  for (const char* key : {"local_explicit", "local_implicit"}) CHECK(double(c["slopes"][key]) == Approx(2.0).margin(0.05));
+  for (const char* key : {"global_explicit", "global_implicit"})
+    CHECK(double(c["slopes"][key]) == Approx(1.0).margin(0.05));
+  for (const char* key : {"local_explicit", "local_implicit"})
+    CHECK(double(c["slopes"][key]) == Approx(2.0).margin(0.05));
   const double t_end = run.summary["parameters"]["t-end"], g = 9.81;
   for (std::size_t i = 0; i < c["dt"].size(); ++i) {
     const double h = c["dt"][i];
@@ -85,9 +93,9 @@ TEST_CASE("chapter 1's round-off sweep: float's error falls, bottoms out, then r
     const json& r = run.summary["roundoff"][key];
     const double best = r["best_dt"], best_error = r["best_error"];
     INFO(key << ": best dt = " << best);
-    CHECK(best < 0.01);                                     // the error fell first
-    CHECK(best > double(r["dt"].back()));                   // the minimum is inside the sweep
-    CHECK(double(r["error"].back()) > 100 * best_error);    // then round-off won
+    CHECK(best < 0.01);                                   // the error fell first
+    CHECK(best > double(r["dt"].back()));                 // the minimum is inside the sweep
+    CHECK(double(r["error"].back()) > 100 * best_error);  // then round-off won
   }
   // Double precision is still on the truncation line at dt = 1e-7: within 1%.
   const json& d = run.summary["roundoff"]["explicit_double"];
@@ -99,11 +107,13 @@ TEST_CASE("chapter 1's round-off sweep: float's error falls, bottoms out, then r
   CHECK(double(d["dt"].back()) == Approx(1e-7).epsilon(1e-12));
 }
 
-TEST_CASE("chapter 1 runs any valid --dt and --t-end: its round-off sweep raises its smallest step to the budget and says so") {
+TEST_CASE("chapter 1 runs any valid --dt and --t-end: its round-off sweep raises its smallest step to the "
+          "budget and says so") {
   // Before, this was refused (exit 2): the sweep, which the user did not ask about, would have
   // needed 6.7e9 steps at --dt-min = 1e-9 s.
   kit::test::TempDir out("ch01-budget");
-  const std::vector<std::string> args{"--x0", "3.7", "--v0", "-1.3", "--g", "-4.2", "--dt", "0.013", "--t-end", "6.721"};
+  const std::vector<std::string> args{"--x0", "3.7",  "--v0",  "-1.3",    "--g",
+                                      "-4.2", "--dt", "0.013", "--t-end", "6.721"};
   auto json_args = args;
   json_args.insert(json_args.end(), {"--json", "--no-plot", "--out", out.path().string()});
   const auto run = run_chapter(json_args);
@@ -140,22 +150,30 @@ TEST_CASE("chapter 1 writes its four figures: data, script, PDF and PNG each") {
     }
     CHECK(run.summary["figures"][name].size() == 4);
   }
-  CHECK(run.process.err.empty());  // no gnuplot warning
+  CHECK(run.process.err.empty());                          // no gnuplot warning
   CHECK(kit::test::files_under(out.path()).size() == 16);  // and no leftover temporary file
 }
 
 TEST_CASE("chapter 1 answers bad input with exit 2, a message naming the flag, and no file") {
-  kit::test::expect_usage_errors(binary, {{{"--dt", "-1"}, "--dt"}, {{"--dt", "nan"}, "--dt"}, {{"--t-end", "0"}, "--t-end"},
-                                          {{"--bogus"}, "--bogus"}, {{"--dt", "0.3", "--t-end", "1"}, "--t-end"},
-                                          {{"--g", "0"}, "--g"}, {{"--dt-min", "1"}, "--dt-min"}, {{"--x0", "inf"}, "--x0"},
-                                          {{"--format", "jpg"}, "--format"}, {{"--g", "1e-300"}, "--g"},
-                                          {{"--dt", "1e-3", "--t-end", "1e4"}, "--t-end"},  // 1e7 steps to record
-                                          {{"--dt", "1e-4", "--t-end", "1e-4", "--dt-min", "1e-3"}, "--dt-min"}});
+  kit::test::expect_usage_errors(binary,
+                                 {{{"--dt", "-1"}, "--dt"},
+                                  {{"--dt", "nan"}, "--dt"},
+                                  {{"--t-end", "0"}, "--t-end"},
+                                  {{"--bogus"}, "--bogus"},
+                                  {{"--dt", "0.3", "--t-end", "1"}, "--t-end"},
+                                  {{"--g", "0"}, "--g"},
+                                  {{"--dt-min", "1"}, "--dt-min"},
+                                  {{"--x0", "inf"}, "--x0"},
+                                  {{"--format", "jpg"}, "--format"},
+                                  {{"--g", "1e-300"}, "--g"},
+                                  {{"--dt", "1e-3", "--t-end", "1e4"}, "--t-end"},  // 1e7 steps to record
+                                  {{"--dt", "1e-4", "--t-end", "1e-4", "--dt-min", "1e-3"}, "--dt-min"}});
 }
 
 TEST_CASE("chapter 1 --help lists every physical flag with its unit") {
   const auto result = kit::test::run_process(binary, {"--help"});
   CHECK(result.exit_code == 0);
-  for (const char* text : {"--x0", "[m]", "--v0", "[m/s]", "--g", "[m/s^2]", "--dt", "--t-end", "[s]", "--json", "--out"})
+  for (const char* text :
+       {"--x0", "[m]", "--v0", "[m/s]", "--g", "[m/s^2]", "--dt", "--t-end", "[s]", "--json", "--out"})
     CHECK_THAT(result.out, ContainsSubstring(text));
 }

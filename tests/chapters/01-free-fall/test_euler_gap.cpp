@@ -36,7 +36,7 @@ TEST_CASE("a gap on the wrong side, or off by the lecture's missing |g|, does no
   const auto [e, i] = loop_gaps(fall, 0.1, 10);
   const auto swapped = kit::check_euler_gaps(fall, 0.1, 1.0, i, e);  // explicit below, implicit above
   CHECK_FALSE(swapped.match[10]);
-  CHECK(swapped.match[0]);  // k = 0: no gap, no side
+  CHECK(swapped.match[0]);      // k = 0: no gap, no side
   std::vector<double> lecture;  // k/2·Δt² without |g|
   for (long k = 0; k <= 10; ++k) lecture.push_back(0.5 * double(k) * 0.01);
   std::vector<double> minus(lecture.size());

@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include <kit_catch.hpp>
 #include <fmt/format.h>
+#include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <kit/app/run_estimate.hpp>
@@ -33,7 +33,9 @@ const std::string binary = KIT_CHAPTER_BINARY;
 json run_chapter(const std::vector<std::string>& args, const fs::path& out) {
   return kit::test::run_chapter_into(binary, args, out);
 }
-json run_chapter(const std::vector<std::string>& args) { return kit::test::run_chapter_json(binary, args, "ch05"); }
+json run_chapter(const std::vector<std::string>& args) {
+  return kit::test::run_chapter_json(binary, args, "ch05");
+}
 using kit::test::slurp;
 fs::path write_scene(const fs::path& dir, const std::string& name, const std::string& text) {
   std::ofstream(dir / name) << text;
@@ -85,12 +87,14 @@ TEST_CASE("chapter 5: the integrators reach the closed form at orders 1, 1, 2; t
   const Fountain f;
   const double euler = f.euler_y(1.0 / 30), exact = f.exact_y(f.t);
   CHECK(double(rows["euler"]["error_at_fps"]) == Approx(std::abs(euler - exact)).epsilon(1e-9));
-  CHECK(double(rows["euler"]["pixels_at_fps"]) == Approx(std::abs(screen_row(euler) - screen_row(exact))).epsilon(1e-6));
+  CHECK(double(rows["euler"]["pixels_at_fps"]) ==
+        Approx(std::abs(screen_row(euler) - screen_row(exact))).epsilon(1e-6));
   CHECK(double(rows["midpoint"]["pixels_at_fps"]) < 0.1);  // midpoint: under a tenth of a pixel at 30 fps
   CHECK(double(rows["euler"]["pixels_at_fps"]) > 5);       // Euler: visibly off
 }
 
-TEST_CASE("chapter 5: ex 5.1's draws have the scene's means and half-widths (uniform: half-width = sqrt(3 var))") {
+TEST_CASE(
+    "chapter 5: ex 5.1's draws have the scene's means and half-widths (uniform: half-width = sqrt(3 var))") {
   const json rows = run_chapter({"--frames", "1"})["emission"];
   REQUIRE(rows.size() == 4);
   for (const json& row : rows) {
@@ -119,7 +123,9 @@ TEST_CASE("chapter 5: a scene does the work of what it lists, and nothing else")
   CHECK(long(fountain["steps"]) > 0);
   CHECK(fountain["drag"] == fountain["steps"]);
   CHECK(fountain["region_checks"] == fountain["steps"]);
-  CHECK(long(fountain["colour"]) + long(fountain["alpha"]) + long(fountain["size"]) + long(fountain["alpha_checks"]) == 0);
+  CHECK(long(fountain["colour"]) + long(fountain["alpha"]) + long(fountain["size"]) +
+            long(fountain["alpha_checks"]) ==
+        0);
   const json fire = run_chapter({"--scene", "fire-and-smoke", "--frames", "20"})["work"];
   CHECK(fire["gravity"] == 0);  // buoyancy comes from the wind, through drag
   CHECK(fire["region_checks"] == 0);
@@ -147,37 +153,43 @@ TEST_CASE("chapter 5: the same seed writes byte-identical frames and data; anoth
   CHECK(fs::exists(a.path() / "play.gp"));
 }
 
-TEST_CASE("chapter 5: bad flags and bad scene files are usage errors that name the flag or file, line and key") {
+TEST_CASE(
+    "chapter 5: bad flags and bad scene files are usage errors that name the flag or file, line and key") {
   kit::test::TempDir dir("ch05-scenes");
   const std::string good = slurp(fs::path(KIT_CHAPTER_SOURCE_DIR) / "scenes" / "fountain.toml");
-  const auto unknown = write_scene(dir.path(), "unknown.toml", "name = 'x'\nframez = 3\n[[emitter]]\nname = 'a'\n");
-  const auto wrong_type = write_scene(dir.path(), "type.toml", "name = 'x'\n[[emitter]]\nname = 'a'\nrate = 'many'\n");
-  const auto range = write_scene(dir.path(), "range.toml", "name = 'x'\n[forces]\ndrag = -1\n[[emitter]]\nname = 'a'\n");
+  const auto unknown =
+      write_scene(dir.path(), "unknown.toml", "name = 'x'\nframez = 3\n[[emitter]]\nname = 'a'\n");
+  const auto wrong_type =
+      write_scene(dir.path(), "type.toml", "name = 'x'\n[[emitter]]\nname = 'a'\nrate = 'many'\n");
+  const auto range =
+      write_scene(dir.path(), "range.toml", "name = 'x'\n[forces]\ndrag = -1\n[[emitter]]\nname = 'a'\n");
   const auto syntax = write_scene(dir.path(), "syntax.toml", "name = 'x\n");
-  kit::test::expect_usage_errors(binary, {
-      {{"--frames", "0"}, "--frames"},
-      {{"--fps", "0.5"}, "--fps"},
-      {{"--integrator", "rk4"}, "--integrator"},
-      {{"--width", "8"}, "--width"},
-      {{"--max-particles", "0"}, "--max-particles"},
-      {{"--seed", "-1"}, "--seed"},
-      {{"--scene", "volcano"}, "fountain"},  // names the scenes there are
-      {{"--scene", (dir.path() / "missing.toml").string()}, "missing.toml"},
-      {{"--scene", unknown.string()}, "unknown.toml:2"},
-      {{"--scene", unknown.string()}, "framez"},
-      {{"--scene", wrong_type.string()}, "type.toml:4"},
-      {{"--scene", wrong_type.string()}, "emitter[0].rate"},
-      {{"--scene", range.string()}, "range.toml:3"},
-      {{"--scene", range.string()}, "forces.drag"},
-      {{"--scene", syntax.string()}, "syntax.toml:1"},
-  });
+  kit::test::expect_usage_errors(binary,
+                                 {
+                                     {{"--frames", "0"}, "--frames"},
+                                     {{"--fps", "0.5"}, "--fps"},
+                                     {{"--integrator", "rk4"}, "--integrator"},
+                                     {{"--width", "8"}, "--width"},
+                                     {{"--max-particles", "0"}, "--max-particles"},
+                                     {{"--seed", "-1"}, "--seed"},
+                                     {{"--scene", "volcano"}, "fountain"},  // names the scenes there are
+                                     {{"--scene", (dir.path() / "missing.toml").string()}, "missing.toml"},
+                                     {{"--scene", unknown.string()}, "unknown.toml:2"},
+                                     {{"--scene", unknown.string()}, "framez"},
+                                     {{"--scene", wrong_type.string()}, "type.toml:4"},
+                                     {{"--scene", wrong_type.string()}, "emitter[0].rate"},
+                                     {{"--scene", range.string()}, "range.toml:3"},
+                                     {{"--scene", range.string()}, "forces.drag"},
+                                     {{"--scene", syntax.string()}, "syntax.toml:1"},
+                                 });
   CHECK_FALSE(good.empty());
 }
 
 TEST_CASE("chapter 5: a run too long for the machine is refused up front with its estimate") {
   kit::test::TempDir out("ch05-huge");
-  const auto result = kit::test::run_process(binary, {"--frames", "20000", "--fps", "1000", "--width", "7680",
-                                                      "--height", "4320", "--out", (out.path() / "figures").string()});
+  const auto result =
+      kit::test::run_process(binary, {"--frames", "20000", "--fps", "1000", "--width", "7680", "--height",
+                                      "4320", "--out", (out.path() / "figures").string()});
   INFO(result.err);
   CHECK(result.exit_code == 2);
   CHECK_THAT(result.err, ContainsSubstring("--frames 20000") && ContainsSubstring("takes about"));
@@ -191,8 +203,9 @@ TEST_CASE("chapter 5: a billion particles are refused up front with the memory t
     const double store = count * double(kit::Particles::bytes_per_particle);  // the particle arrays alone
     if (store < kit::machine_memory()) continue;
     kit::test::TempDir out("ch05-billion");
-    const auto result = kit::test::run_process(binary, {"--max-particles", fmt::format("{:g}", count), "--frames",
-                                                        "1", "--out", (out.path() / "figures").string()});
+    const auto result =
+        kit::test::run_process(binary, {"--max-particles", fmt::format("{:g}", count), "--frames", "1",
+                                        "--out", (out.path() / "figures").string()});
     INFO(result.err);
     CHECK(result.exit_code == 2);
     CHECK_THAT(result.err, ContainsSubstring(std::string("--max-particles ") + digits) &&
@@ -208,11 +221,12 @@ TEST_CASE("chapter 5: a billion particles are refused up front with the memory t
 TEST_CASE("chapter 5: explicit Euler past Δt = 2/k diverges: a reported result, exit 3 only on request") {
   kit::test::TempDir dir("ch05-stiff");
   // |1 − kΔt| = 9 > 1 for k = 10 1/s at 1 fps: every step multiplies the velocity by −9.
-  const auto stiff = write_scene(dir.path(), "stiff.toml",
+  const auto stiff = write_scene(
+      dir.path(), "stiff.toml",
       "name = 'stiff'\n[forces]\ndrag = 10\ngravity = [0, -9.81, 0]\n[[emitter]]\nname = 'a'\nrate = 5\n"
       "speed = 5\nlifetime = 1000\n");
-  const std::vector<std::string> args{"--scene", stiff.string(), "--fps", "1", "--frames", "400", "--integrator",
-                                      "euler"};
+  const std::vector<std::string> args{"--scene",  stiff.string(), "--fps",        "1",
+                                      "--frames", "400",          "--integrator", "euler"};
   const json s = run_chapter(args);
   REQUIRE(s.contains("divergences"));
   CHECK_THAT(s["divergences"].dump(), ContainsSubstring("infinite at frame"));
@@ -223,13 +237,14 @@ TEST_CASE("chapter 5: explicit Euler past Δt = 2/k diverges: a reported result,
   const json exact = run_chapter({"--scene", stiff.string(), "--fps", "1", "--frames", "400"});
   CHECK_FALSE(exact.contains("divergences"));  // the closed form is stable at any Δt
   // Diverged while warming up, before any frame is drawn: still a result, with figures on.
-  const auto warm = write_scene(dir.path(), "warm.toml",
+  const auto warm = write_scene(
+      dir.path(), "warm.toml",
       "name = 'warm'\nwarmup = 100\n[forces]\ndrag = 10\n[[emitter]]\nname = 'a'\nrate = 5\nspeed = 5\n"
       "lifetime = 1000\n");
   kit::test::TempDir out("ch05-warm");
-  const auto drawn = kit::test::run_process(binary, {"--scene", warm.string(), "--fps", "1", "--frames", "5",
-                                                     "--integrator", "euler", "--format", "png", "--out",
-                                                     out.path().string()});
+  const auto drawn =
+      kit::test::run_process(binary, {"--scene", warm.string(), "--fps", "1", "--frames", "5", "--integrator",
+                                      "euler", "--format", "png", "--out", out.path().string()});
   INFO(drawn.err);
   CHECK(drawn.exit_code == 0);
   CHECK_THAT(drawn.out, ContainsSubstring("No frame was rendered"));
@@ -254,7 +269,7 @@ TEST_CASE("chapter 5: a rerun into the same folder animates its own frames, not 
 TEST_CASE("chapter 5: a texture that is not there is a usage error before anything is written") {
   kit::test::TempDir dir("ch05-texture");
   const auto scene = write_scene(dir.path(), "textured.toml",
-      "name = 'x'\n[[emitter]]\nname = 'a'\ntexture = 'missing.png'\n");
+                                 "name = 'x'\n[[emitter]]\nname = 'a'\ntexture = 'missing.png'\n");
   kit::test::expect_usage_errors(binary, {{{"--scene", scene.string()}, "emitter[0].texture"},
                                           {{"--scene", scene.string(), "--no-plot"}, "missing.png"}});
 }
@@ -262,9 +277,9 @@ TEST_CASE("chapter 5: a texture that is not there is a usage error before anythi
 TEST_CASE("chapter 5: without ffmpeg the chapter says so and keeps the PNG frames") {
   kit::test::TempDir bin("ch05-path"), out("ch05-noffmpeg");
   fs::create_symlink("/usr/bin/gnuplot", bin.path() / "gnuplot");
-  const auto result = kit::test::run_process("env", {"PATH=" + bin.path().string(), binary, "--frames", "4",
-                                                     "--width", "64", "--height", "36", "--format", "png",
-                                                     "--out", out.path().string()});
+  const auto result =
+      kit::test::run_process("env", {"PATH=" + bin.path().string(), binary, "--frames", "4", "--width", "64",
+                                     "--height", "36", "--format", "png", "--out", out.path().string()});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   CHECK_THAT(result.out, ContainsSubstring("ffmpeg not found"));
@@ -277,13 +292,15 @@ namespace {
 kit::SpriteScene jet_scene() {
   return kit::parse_sprite_scene("name = 'jet'\n[[emitter]]\nname = 'jet'\nshape = 'cone'\nangle_deg = 20\n"
                                  "rate = { mean = 40, variance = 10 }\nspeed = { mean = 5, variance = 1 }\n"
-                                 "lifetime = { mean = 1.0, variance = 0.5 }\n", "jet.toml");
+                                 "lifetime = { mean = 1.0, variance = 0.5 }\n",
+                                 "jet.toml");
 }
 }  // namespace
 
 TEST_CASE("sprite system: a particle lives exactly ceil(lifetime / dt) updates", "[system]") {
   const kit::SpriteScene scene = jet_scene();
-  kit::SpriteSystem system(scene, 100000, 30, 3, kit::Integrator::exact, kit::student_kernels(scene.emitters[0]));
+  kit::SpriteSystem system(scene, 100000, 30, 3, kit::Integrator::exact,
+                           kit::student_kernels(scene.emitters[0]));
   std::map<std::uint32_t, std::pair<long, float>> born;  // id -> frame, lifetime
   long checked = 0, ambiguous = 0;
   std::map<std::uint32_t, bool> seen;
@@ -315,14 +332,16 @@ TEST_CASE("sprite system: a particle lives exactly ceil(lifetime / dt) updates",
   CHECK(ambiguous < checked / 100);
 }
 
-TEST_CASE("sprite system: counts are conserved: alive = emitted − dead after every frame, bursts included", "[system]") {
+TEST_CASE("sprite system: counts are conserved: alive = emitted − dead after every frame, bursts included",
+          "[system]") {
   kit::SpriteScene scene = jet_scene();
   scene.emitters[0].on_death = 1;
   kit::Emitter burst;
   burst.name = "burst", burst.burst_only = true, burst.rate = {20, 5}, burst.speed = {3, 1};
   burst.lifetime = {0.5, 0.2};
   scene.emitters.push_back(burst);
-  kit::SpriteSystem system(scene, 3000, 30, 5, kit::Integrator::midpoint, kit::student_kernels(scene.emitters[0]));  // small: some are dropped
+  kit::SpriteSystem system(scene, 3000, 30, 5, kit::Integrator::midpoint,
+                           kit::student_kernels(scene.emitters[0]));  // small: some are dropped
   long emitted = 0, died = 0, dropped = 0;
   for (int f = 0; f < 90; ++f) {
     const kit::FrameCounts c = system.step();
@@ -338,7 +357,8 @@ TEST_CASE("sprite system: counts are conserved: alive = emitted − dead after e
 TEST_CASE("sprite system: the same seed gives identical particles, another seed different ones", "[system]") {
   const kit::SpriteScene scene = jet_scene();
   const auto positions = [&](std::uint64_t seed) {
-    kit::SpriteSystem system(scene, 100000, 30, seed, kit::Integrator::midpoint, kit::student_kernels(scene.emitters[0]));
+    kit::SpriteSystem system(scene, 100000, 30, seed, kit::Integrator::midpoint,
+                             kit::student_kernels(scene.emitters[0]));
     for (int f = 0; f < 30; ++f) system.step();
     const auto& ps = system.particles();
     return std::vector<float>(ps.x.begin(), ps.x.begin() + long(ps.size()));

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <kit_catch.hpp>
 #include <fmt/format.h>
+#include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <kit/cloth/cloth_run.hpp>
@@ -73,7 +73,8 @@ TEST_CASE("cloth: spring forces sum to zero and are minus the gradient of the sp
 
 TEST_CASE("cloth: the vectorised force pass equals the spring-by-spring sum of ex 6.1", "[cloth]") {
   kit::ClothScene scene = square_sheet(9, true, true);
-  scene.springs.structural->damping = 0.3, scene.springs.shear->damping = 0.2, scene.springs.bend->damping = 0.1;
+  scene.springs.structural->damping = 0.3, scene.springs.shear->damping = 0.2,
+  scene.springs.bend->damping = 0.1;
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   const kit::ClothForces forces(springs, scene.grid.node_masses(), kit::Vec3(0, -9.81, 0), 0.5);
   std::mt19937_64 random(4);
@@ -88,13 +89,14 @@ TEST_CASE("cloth: the vectorised force pass equals the spring-by-spring sum of e
   for (std::size_t s = 0; s < springs.size(); ++s) {
     const auto a = springs.a[s], b = springs.b[s];
     const kit::Vec3 fa = kit::spring_force(x.row(a), x.row(b), v.row(a), v.row(b), springs.rest[s],
-                                              {springs.stiffness[s], springs.damping[s]});
+                                           {springs.stiffness[s], springs.damping[s]});
     expected.row(a) += fa.transpose(), expected.row(b) -= fa.transpose();
   }
   CHECK((f - expected).cwiseAbs().maxCoeff() < 1e-12 * expected.cwiseAbs().maxCoeff());
 }
 
-TEST_CASE("cloth: a pinned sheet at rest with no gravity stays at rest to round-off, for every integrator", "[cloth]") {
+TEST_CASE("cloth: a pinned sheet at rest with no gravity stays at rest to round-off, for every integrator",
+          "[cloth]") {
   kit::ClothScene scene = square_sheet(12, true, true);
   scene.pins = {{0, 0}, {-1, 0}, {5, -1}};
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
@@ -108,13 +110,14 @@ TEST_CASE("cloth: a pinned sheet at rest with no gravity stays at rest to round-
   }
 }
 
-TEST_CASE("cloth: pins hold under gravity, on the ground and inside a sphere, for every integrator", "[cloth]") {
+TEST_CASE("cloth: pins hold under gravity, on the ground and inside a sphere, for every integrator",
+          "[cloth]") {
   kit::ClothScene scene = square_sheet(10, true, false);
   scene.gravity = kit::Vec3(0, -9.81, 0);
   scene.grid.origin = {0, 0.05, 0};
   scene.pins = {{0, 0}, {-1, -1}};
-  scene.ground = kit::GroundCollider{0.1, 0.5};                      // the sheet starts below it
-  scene.spheres = {kit::SphereCollider{{0, 0.05, 0}, 0.2, 0.3}};    // and pin (0, 0) inside this
+  scene.ground = kit::GroundCollider{0.1, 0.5};                   // the sheet starts below it
+  scene.spheres = {kit::SphereCollider{{0, 0.05, 0}, 0.2, 0.3}};  // and pin (0, 0) inside this
   scene.strain_limit = kit::StrainLimit{};
   const auto kernels = kit::student_cloth_kernels();
   const kit::Springs springs = kernels.build_springs(scene.grid, scene.springs);
@@ -131,7 +134,8 @@ TEST_CASE("cloth: pins hold under gravity, on the ground and inside a sphere, fo
   }
 }
 
-TEST_CASE("cloth: ω_max² from power iteration matches the anchors' table (equal masses, free edges)", "[cloth]") {
+TEST_CASE("cloth: ω_max² from power iteration matches the anchors' table (equal masses, free edges)",
+          "[cloth]") {
   // ANCHORS, "Cloth grid, linearised at rest": λ_max(M⁻¹K) in units of k/m.
   const double table[2][3] = {{3.90, 7.72, 9.59}, {3.99, 7.97, 10.06}};
   for (int size : {0, 1}) {
@@ -152,7 +156,8 @@ TEST_CASE("cloth: symplectic Euler's measured Δt_max is within 10% of 2/ω_max 
   for (int families = 1; families <= 3; ++families) {
     const auto r = kit::stability_at(square_sheet(16, families >= 2, families >= 3), 16, kernels,
                                      kit::ClothIntegrator::symplectic_euler);
-    INFO(families << " families: predicted " << r.predicted << " s, measured " << r.measured.estimate() << " s");
+    INFO(families << " families: predicted " << r.predicted << " s, measured " << r.measured.estimate()
+                  << " s");
     CHECK(r.predicted == Approx(2 / r.omega_max).epsilon(1e-9));
     CHECK(r.measured.estimate() == Approx(r.predicted).epsilon(0.10));
   }
@@ -164,12 +169,15 @@ TEST_CASE("cloth: Δt_max falls like 1/N within 15% across N = 16, 32, 64", "[cl
   scene.pins = {{0, -1}, {-1, -1}};
   std::vector<double> n_dt;
   for (int n : {16, 32, 64})
-    n_dt.push_back((n - 1) * kit::stability_at(scene, n, kernels, kit::ClothIntegrator::symplectic_euler).measured.estimate());
+    n_dt.push_back(
+        (n - 1) *
+        kit::stability_at(scene, n, kernels, kit::ClothIntegrator::symplectic_euler).measured.estimate());
   CHECK(n_dt[1] == Approx(n_dt[0]).epsilon(0.15));
   CHECK(n_dt[2] == Approx(n_dt[0]).epsilon(0.15));
 }
 
-TEST_CASE("cloth: the predictions of the four integrators, undamped and damped, against the closed forms", "[cloth]") {
+TEST_CASE("cloth: the predictions of the four integrators, undamped and damped, against the closed forms",
+          "[cloth]") {
   using I = kit::ClothIntegrator;
   CHECK(kit::predicted_dt_max(I::symplectic_euler, 100) == Approx(0.02).epsilon(1e-6));
   CHECK(kit::predicted_dt_max(I::rk4, 100) == Approx(2 * std::sqrt(2.0) / 100).epsilon(1e-6));
@@ -184,7 +192,8 @@ TEST_CASE("cloth: the drape keeps every node out of the sphere and above the gro
   const auto kernels = kit::student_cloth_kernels();
   const kit::Springs springs = kernels.build_springs(scene.grid, scene.springs);
   kit::ClothRunOptions run;
-  run.integrator = scene.integrator, run.dt = scene.dt, run.t_end = std::min(scene.t_end, 1.5), run.samples = 50;
+  run.integrator = scene.integrator, run.dt = scene.dt, run.t_end = std::min(scene.t_end, 1.5),
+  run.samples = 50;
   const kit::ClothRecording rec = kit::run_cloth(scene, springs, kernels, run);
   CHECK(rec.exploded_at < 0);
   CHECK(rec.work.contacts > 0);
@@ -202,7 +211,8 @@ TEST_CASE("cloth: what a scene does not list is neither built nor computed", "[c
   CHECK(bare.work.force_passes == 40);
   CHECK(bare.work.spring_terms == 40 * long(springs.size()));
   CHECK(bare.work.spring_terms_by_kind[int(kit::SpringKind::bend)] == 0);
-  CHECK(bare.work.gravity_terms + bare.work.drag_terms + bare.work.sphere_tests + bare.work.ground_tests == 0);
+  CHECK(bare.work.gravity_terms + bare.work.drag_terms + bare.work.sphere_tests + bare.work.ground_tests ==
+        0);
   CHECK(bare.work.strain_passes == 0);
   scene.gravity = kit::Vec3(0, -9.81, 0), scene.ground = kit::GroundCollider{-1, 0};
   kit::ClothSystem full(scene, springs, kernels);
@@ -255,7 +265,8 @@ TEST_CASE("chapter 6: the printed numbers are the ones measured: Δt_max, the 1/
     CHECK(row["cells_dt"].get<double>() == Approx(law[0]["cells_dt"].get<double>()).epsilon(0.15));
   // The explicit cost per simulated second grows like N³: ×8 per doubling, within 25%.
   for (int k : {1, 2})
-    CHECK(law[k]["per_second"].get<double>() / law[k - 1]["per_second"].get<double>() == Approx(8).epsilon(0.25));
+    CHECK(law[k]["per_second"].get<double>() / law[k - 1]["per_second"].get<double>() ==
+          Approx(8).epsilon(0.25));
   // The flag is soft: springs alone stretch past the limit; the limit holds it within one
   // percentage point of it.
   CHECK(j["strain"]["free"].get<double>() > j["strain"]["max"].get<double>());
@@ -279,8 +290,9 @@ TEST_CASE("chapter 6: the printed numbers are the ones measured: Δt_max, the 1/
 TEST_CASE("chapter 6: frames, OBJ meshes that parse, and an animation player") {
   kit::test::TempDir out("ch06-frames");
   // --quick: the scene's run is the full one; the fixed experiments beside it still draw their figures.
-  const json j = run_chapter({"--quick", "--scene", "drape", "--resolution", "12", "--t-end", "0.4", "--frames",
-                              "4", "--width", "160", "--height", "120"}, out.path());
+  const json j = run_chapter({"--quick", "--scene", "drape", "--resolution", "12", "--t-end", "0.4",
+                              "--frames", "4", "--width", "160", "--height", "120"},
+                             out.path());
   for (int k = 0; k <= 4; ++k) {
     CHECK(fs::exists(out.path() / "frames" / fmt::format("frame_{:04d}.png", k)));
     const kit::ObjMesh mesh = kit::read_obj(out.path() / "meshes" / fmt::format("cloth_{:04d}.obj", k));
@@ -296,7 +308,8 @@ TEST_CASE("chapter 6: frames, OBJ meshes that parse, and an animation player") {
   CHECK(j["contacts"]["deepest"].get<double>() < 1e-9);
 }
 
-TEST_CASE("chapter 6: bad flags and bad scene files are usage errors that name the flag or file, line and key") {
+TEST_CASE(
+    "chapter 6: bad flags and bad scene files are usage errors that name the flag or file, line and key") {
   kit::test::TempDir dir("ch06-scenes");
   const auto write = [&](const std::string& name, const std::string& text) {
     std::ofstream(dir.path() / name) << text;
@@ -306,26 +319,28 @@ TEST_CASE("chapter 6: bad flags and bad scene files are usage errors that name t
   const auto unknown = write("unknown.toml", sheet + "[springs.structural]\nstiffness = 10\nstifness = 3\n");
   const auto range = write("range.toml", sheet + "[springs.structural]\nstiffness = -10\n");
   const auto pin = write("pin.toml", "pins = [[9, 0]]\n" + sheet + "[springs.structural]\nstiffness = 10\n");
-  kit::test::expect_usage_errors(binary, {
-      {{"--dt", "0"}, "--dt"},
-      {{"--dt", "2"}, "--dt"},
-      {{"--t-end", "-1"}, "--t-end"},
-      {{"--resolution", "1"}, "--resolution"},
-      {{"--frames", "0"}, "--frames"},
-      {{"--width", "8"}, "--width"},
-      {{"--integrator", "verlet"}, "--integrator"},
-      {{"--scene", "tablecloth"}, "flag"},  // names the scenes there are
-      {{"--scene", unknown}, "unknown.toml:7"},
-      {{"--scene", unknown}, "stifness"},
-      {{"--scene", range}, "range.toml:6"},
-      {{"--scene", range}, "stiffness"},
-      {{"--scene", pin}, "pin.toml:1"},
-  });
+  kit::test::expect_usage_errors(binary,
+                                 {
+                                     {{"--dt", "0"}, "--dt"},
+                                     {{"--dt", "2"}, "--dt"},
+                                     {{"--t-end", "-1"}, "--t-end"},
+                                     {{"--resolution", "1"}, "--resolution"},
+                                     {{"--frames", "0"}, "--frames"},
+                                     {{"--width", "8"}, "--width"},
+                                     {{"--integrator", "verlet"}, "--integrator"},
+                                     {{"--scene", "tablecloth"}, "flag"},  // names the scenes there are
+                                     {{"--scene", unknown}, "unknown.toml:7"},
+                                     {{"--scene", unknown}, "stifness"},
+                                     {{"--scene", range}, "range.toml:6"},
+                                     {{"--scene", range}, "stiffness"},
+                                     {{"--scene", pin}, "pin.toml:1"},
+                                 });
 }
 
 TEST_CASE("chapter 6: a resolution too large for the machine is refused up front with its estimate") {
   kit::test::TempDir out("ch06-huge");
-  const auto result = kit::test::run_process(binary, {"--resolution", "100000", "--out", (out.path() / "f").string()});
+  const auto result =
+      kit::test::run_process(binary, {"--resolution", "100000", "--out", (out.path() / "f").string()});
   INFO(result.err);
   CHECK(result.exit_code == 2);
   CHECK_THAT(result.err, ContainsSubstring("--resolution 100000") && ContainsSubstring("takes about") &&

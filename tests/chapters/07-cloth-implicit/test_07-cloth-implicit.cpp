@@ -63,13 +63,14 @@ std::vector<kit::Mat3> unclamped_blocks(const kit::ClothSystem& cloth) {
   const kit::Springs& springs = cloth.springs();
   std::vector<kit::Mat3> blocks(springs.size());
   for (std::size_t s = 0; s < springs.size(); ++s)
-    blocks[s] = kit::spring_stiffness_block(cloth.x.row(springs.a[s]), cloth.x.row(springs.b[s]), springs.rest[s],
-                                            springs.stiffness[s], false);
+    blocks[s] = kit::spring_stiffness_block(cloth.x.row(springs.a[s]), cloth.x.row(springs.b[s]),
+                                            springs.rest[s], springs.stiffness[s], false);
   return blocks;
 }
 }  // namespace
 
-TEST_CASE("implicit cloth: (M − A)/h² is ∂f/∂x, matching central differences of the forces to 1e-6", "[implicit]") {
+TEST_CASE("implicit cloth: (M − A)/h² is ∂f/∂x, matching central differences of the forces to 1e-6",
+          "[implicit]") {
   const kit::ClothScene scene = sheet(1e3);
   kit::ClothSystem cloth = swinging(scene);
   const kit::Springs& springs = cloth.springs();
@@ -94,7 +95,8 @@ TEST_CASE("implicit cloth: (M − A)/h² is ∂f/∂x, matching central differen
   }
 }
 
-TEST_CASE("implicit cloth: (M(1 + hc) − A − h²∂f/∂x)/h is ∂f/∂v, matching central differences in v", "[implicit]") {
+TEST_CASE("implicit cloth: (M(1 + hc) − A − h²∂f/∂x)/h is ∂f/∂v, matching central differences in v",
+          "[implicit]") {
   kit::ClothScene scene = sheet(1e3);
   scene.drag = 3;
   for (auto* family : {&scene.springs.structural, &scene.springs.shear, &scene.springs.bend})
@@ -134,8 +136,9 @@ TEST_CASE("implicit cloth: on the ground, friction inside the filtered step brin
   CHECK(rec.samples.back().kinetic < 1e-6);
 }
 
-TEST_CASE("implicit cloth: A is symmetric and definite with the clamp; without it CG reports negative curvature",
-          "[implicit]") {
+TEST_CASE(
+    "implicit cloth: A is symmetric and definite with the clamp; without it CG reports negative curvature",
+    "[implicit]") {
   const kit::ClothScene scene = kit::load_cloth_scene(scenes / "flag.toml");
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   const kit::AssemblyCheck c = kit::check_assembly(scene, springs, kit::student_implicit_kernels(), 1.0 / 30);
@@ -149,7 +152,8 @@ TEST_CASE("implicit cloth: A is symmetric and definite with the clamp; without i
   CHECK(c.unclamped_solve.x.allFinite());
 }
 
-TEST_CASE("implicit cloth: with the clamp off on a crumpling sheet, the run stops with the solver's reason", "[implicit]") {
+TEST_CASE("implicit cloth: with the clamp off on a crumpling sheet, the run stops with the solver's reason",
+          "[implicit]") {
   kit::ClothScene scene = sheet(1e4);
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   scene.grid.width *= 0.6;  // the sheet starts at 60% of its springs' rest lengths across
@@ -163,7 +167,8 @@ TEST_CASE("implicit cloth: with the clamp off on a crumpling sheet, the run stop
   run.implicit_settings.solver = kit::ImplicitSolver::mg;
   const kit::ClothRecording multigrid = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run);
   CHECK(multigrid.exploded_at > 0);
-  CHECK_THAT(multigrid.failure, ContainsSubstring("not positive definite") || ContainsSubstring("negative curvature"));
+  CHECK_THAT(multigrid.failure,
+             ContainsSubstring("not positive definite") || ContainsSubstring("negative curvature"));
   run.implicit_settings.solver = kit::ImplicitSolver::pcg;
   run.implicit_settings.clamp = true;
   const kit::ClothRecording clamped = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run);
@@ -171,7 +176,8 @@ TEST_CASE("implicit cloth: with the clamp off on a crumpling sheet, the run stop
   CHECK(clamped.failure.empty());
 }
 
-TEST_CASE("implicit cloth: K = 1e6 N/m at h = 1/30 s stays bounded and its energy never grows", "[implicit]") {
+TEST_CASE("implicit cloth: K = 1e6 N/m at h = 1/30 s stays bounded and its energy never grows",
+          "[implicit]") {
   const kit::ClothScene scene = sheet(1e6);
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   for (const auto method : {kit::ImplicitMethod::linearised, kit::ImplicitMethod::newton}) {
@@ -188,7 +194,8 @@ TEST_CASE("implicit cloth: K = 1e6 N/m at h = 1/30 s stays bounded and its energ
     run.implicit_settings.cg_tolerance = 1e-10;
     const kit::ClothRecording exact = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run);
     REQUIRE(exact.samples.size() == 31);
-    const double allowed = method == kit::ImplicitMethod::newton ? 1e-9 : 1e-3 * std::abs(exact.samples[0].total());
+    const double allowed =
+        method == kit::ImplicitMethod::newton ? 1e-9 : 1e-3 * std::abs(exact.samples[0].total());
     for (std::size_t k = 1; k < exact.samples.size(); ++k)
       CHECK(exact.samples[k].total() <= exact.samples[k - 1].total() + allowed);
     CHECK(exact.samples.back().total() < exact.samples.front().total());
@@ -199,12 +206,14 @@ TEST_CASE("implicit cloth: K = 1e6 N/m at h = 1/30 s stays bounded and its energ
   CHECK(kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run).exploded_at >= 0);
 }
 
-TEST_CASE("implicit cloth: as h → 0 the implicit step agrees with RK4, its error halving with h", "[implicit]") {
+TEST_CASE("implicit cloth: as h → 0 the implicit step agrees with RK4, its error halving with h",
+          "[implicit]") {
   const kit::ClothScene scene = sheet(1e2);
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   kit::ClothRunOptions fine;
   fine.integrator = kit::ClothIntegrator::rk4, fine.dt = 2e-4, fine.t_end = 0.2, fine.frames = 1;
-  const kit::NodeArray reference = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), fine).frames.back();
+  const kit::NodeArray reference =
+      kit::run_cloth(scene, springs, kit::student_cloth_kernels(), fine).frames.back();
   std::vector<double> errors;
   for (const double h : {0.2 / 32, 0.2 / 64, 0.2 / 128, 0.2 / 256}) {
     kit::ClothRunOptions run = implicit_run(kit::ImplicitMethod::linearised, h, 0.2);
@@ -217,13 +226,15 @@ TEST_CASE("implicit cloth: as h → 0 the implicit step agrees with RK4, its err
   CHECK(errors.back() < 1e-2 * (reference - scene.grid.rest_positions()).norm());
 }
 
-TEST_CASE("implicit cloth: the filtered PCGs hold pins exactly; Eigen's CG holds them by elimination", "[implicit]") {
+TEST_CASE("implicit cloth: the filtered PCGs hold pins exactly; Eigen's CG holds them by elimination",
+          "[implicit]") {
   kit::ClothScene scene = sheet(1e4);
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   const kit::NodeArray rest = scene.grid.rest_positions();
   for (const auto solver : kit::all_implicit_solvers) {
     const kit::ClothRecording rec =
-        kit::run_cloth(scene, springs, kit::student_cloth_kernels(), implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 1, solver));
+        kit::run_cloth(scene, springs, kit::student_cloth_kernels(),
+                       implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 1, solver));
     REQUIRE(rec.exploded_at < 0);
     for (const kit::Pin& pin : scene.pins) {
       const long node = kit::pinned_node(scene.grid, pin);
@@ -233,14 +244,16 @@ TEST_CASE("implicit cloth: the filtered PCGs hold pins exactly; Eigen's CG holds
   }
 }
 
-TEST_CASE("implicit cloth: Liu's local/global iterations converge to Newton's backward-Euler step", "[implicit]") {
+TEST_CASE("implicit cloth: Liu's local/global iterations converge to Newton's backward-Euler step",
+          "[implicit]") {
   kit::ClothScene scene = sheet(1e3);
   scene.drag = 5;  // [1/s]: both treat it by backward Euler
   for (const double h : {1.0 / 30, 1.0 / 120}) {
     kit::ClothSystem newton_cloth = swinging(scene), liu_cloth = swinging(scene);
     kit::ImplicitSettings exact;
     exact.cg_tolerance = 1e-12, exact.iterations = 50, exact.newton_tolerance = 1e-10;
-    kit::BackwardEulerStepper newton(newton_cloth, kit::ImplicitMethod::newton, exact, kit::student_implicit_kernels());
+    kit::BackwardEulerStepper newton(newton_cloth, kit::ImplicitMethod::newton, exact,
+                                     kit::student_implicit_kernels());
     newton.step(newton_cloth, h);
     CHECK(newton.work.newton_unconverged == 0);
     std::vector<double> gaps;
@@ -259,13 +272,15 @@ TEST_CASE("implicit cloth: Liu's local/global iterations converge to Newton's ba
   }
 }
 
-TEST_CASE("implicit cloth: CG iterations are counted, reported and bounded by the system's size", "[implicit]") {
+TEST_CASE("implicit cloth: CG iterations are counted, reported and bounded by the system's size",
+          "[implicit]") {
   const kit::ClothScene scene = sheet(1e4);
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   const long unknowns = 3 * scene.grid.nodes();
   for (const auto solver : kit::all_implicit_solvers) {
     const kit::ClothRecording rec =
-        kit::run_cloth(scene, springs, kit::student_cloth_kernels(), implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 1, solver));
+        kit::run_cloth(scene, springs, kit::student_cloth_kernels(),
+                       implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 1, solver));
     const kit::ImplicitWork& w = rec.implicit;
     CHECK(w.steps == 30);
     CHECK(w.solves == 30);
@@ -280,15 +295,18 @@ TEST_CASE("implicit cloth: CG iterations are counted, reported and bounded by th
   }
 }
 
-TEST_CASE("implicit cloth: on the drape at h = 1/30 s, filters hold the sheet on the sphere; CG with contacts after "
-          "the step lets it through", "[implicit]") {
+TEST_CASE("implicit cloth: on the drape at h = 1/30 s, filters hold the sheet on the sphere; CG with "
+          "contacts after "
+          "the step lets it through",
+          "[implicit]") {
   const kit::ClothScene scene = kit::load_cloth_scene(scenes / "drape.toml");
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   const double top = scene.spheres.at(0).center.y() + scene.spheres.at(0).radius;
   double highest[3];
   for (const auto solver : kit::all_implicit_solvers) {
-    const kit::ClothRecording rec = kit::run_cloth(scene, springs, kit::student_cloth_kernels(),
-                                                   implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 3, solver));
+    const kit::ClothRecording rec =
+        kit::run_cloth(scene, springs, kit::student_cloth_kernels(),
+                       implicit_run(kit::ImplicitMethod::linearised, 1.0 / 30, 3, solver));
     REQUIRE(rec.exploded_at < 0);
     CHECK(rec.deepest < 1e-9);  // after each step's contacts, whichever solver
     highest[int(solver)] = rec.frames.back().col(1).maxCoeff();
@@ -296,7 +314,7 @@ TEST_CASE("implicit cloth: on the drape at h = 1/30 s, filters hold the sheet on
   }
   CHECK(highest[int(kit::ImplicitSolver::pcg)] > 0.95 * top);  // draped over the sphere
   CHECK(highest[int(kit::ImplicitSolver::mg)] > 0.95 * top);
-  CHECK(highest[int(kit::ImplicitSolver::cg)] < 0.1 * top);   // fallen through it to the ground
+  CHECK(highest[int(kit::ImplicitSolver::cg)] < 0.1 * top);  // fallen through it to the ground
 }
 
 namespace {
@@ -310,7 +328,8 @@ kit::SparseMatrix swinging_matrix(int n, double stiffness) {
   cloth.x = shape.x, cloth.v = shape.v;
   kit::ImplicitSettings settings;
   settings.solver = kit::ImplicitSolver::mg;
-  kit::BackwardEulerStepper stepper(cloth, kit::ImplicitMethod::linearised, settings, kit::student_implicit_kernels());
+  kit::BackwardEulerStepper stepper(cloth, kit::ImplicitMethod::linearised, settings,
+                                    kit::student_implicit_kernels());
   stepper.velocity_change(cloth, 1.0 / 30);
   return stepper.matrix();
 }
@@ -323,8 +342,10 @@ Eigen::VectorXd random_vector(Eigen::Index size, std::mt19937_64& random) {
 }
 }  // namespace
 
-TEST_CASE("multigrid: the V-cycle is symmetric positive definite and its PCG agrees with a direct solve, on grids "
-          "of any shape", "[implicit][multigrid]") {
+TEST_CASE(
+    "multigrid: the V-cycle is symmetric positive definite and its PCG agrees with a direct solve, on grids "
+    "of any shape",
+    "[implicit][multigrid]") {
   std::mt19937_64 random(11);
   // Odd and even sides, square and not, and one small enough to be its own coarsest grid.
   for (const int n : {2, 4, 9, 12, 30}) {
@@ -334,7 +355,8 @@ TEST_CASE("multigrid: the V-cycle is symmetric positive definite and its PCG agr
     REQUIRE(multigrid.setup(A));
     INFO(scene.grid.nx << "x" << scene.grid.ny << " nodes, " << multigrid.levels() << " levels");
     CHECK(multigrid.level_nodes(multigrid.levels() - 1) <= 36);  // the coarsest: at most 6×6
-    for (int l = 1; l < multigrid.levels(); ++l) CHECK(4 * multigrid.level_nodes(l) < 2 * multigrid.level_nodes(l - 1));
+    for (int l = 1; l < multigrid.levels(); ++l)
+      CHECK(4 * multigrid.level_nodes(l) < 2 * multigrid.level_nodes(l - 1));
     for (int trial = 0; trial < 5; ++trial) {
       const Eigen::VectorXd r = random_vector(A.rows(), random), s = random_vector(A.rows(), random);
       Eigen::VectorXd br, bs;
@@ -356,8 +378,10 @@ TEST_CASE("multigrid: the V-cycle is symmetric positive definite and its PCG agr
   }
 }
 
-TEST_CASE("multigrid: CG needs an order of magnitude fewer iterations than with diag(A), the more so as K and the "
-          "resolution grow", "[implicit][multigrid]") {
+TEST_CASE(
+    "multigrid: CG needs an order of magnitude fewer iterations than with diag(A), the more so as K and the "
+    "resolution grow",
+    "[implicit][multigrid]") {
   std::mt19937_64 random(12);
   std::map<std::pair<int, double>, std::pair<int, int>> counts;  // (n, K) → (multigrid, diagonal)
   for (const int n : {9, 17, 33})
@@ -384,14 +408,16 @@ TEST_CASE("multigrid: CG needs an order of magnitude fewer iterations than with 
     }
   // Up to K = 1e4 N/m (the bench's sheet), the count barely moves with the resolution; at 1e6 it
   // grows (bilinear interpolation misses the stiff sheet's soft bending shapes), diag(A)'s more.
-  for (const double stiffness : {1e2, 1e4}) CHECK(counts[{33, stiffness}].first <= 2 * counts[{9, stiffness}].first);
+  for (const double stiffness : {1e2, 1e4})
+    CHECK(counts[{33, stiffness}].first <= 2 * counts[{9, stiffness}].first);
   const auto gain = [&](int n, double k) { return double(counts[{n, k}].second) / counts[{n, k}].first; };
   CHECK(gain(33, 1e4) > 5 * gain(9, 1e2));
   CHECK(gain(33, 1e6) > 4 * gain(9, 1e2));
 }
 
-TEST_CASE("multigrid: Newton's backward Euler with the multigrid PCG reaches the step the filtered PCG reaches",
-          "[implicit][multigrid]") {
+TEST_CASE(
+    "multigrid: Newton's backward Euler with the multigrid PCG reaches the step the filtered PCG reaches",
+    "[implicit][multigrid]") {
   const kit::ClothScene scene = sheet(1e4, 12);
   kit::ClothSystem start = swinging(scene);
   kit::ImplicitSettings exact;
@@ -400,7 +426,8 @@ TEST_CASE("multigrid: Newton's backward Euler with the multigrid PCG reaches the
   for (const auto solver : {kit::ImplicitSolver::pcg, kit::ImplicitSolver::mg}) {
     kit::ClothSystem cloth = start;
     exact.solver = solver;
-    kit::BackwardEulerStepper newton(cloth, kit::ImplicitMethod::newton, exact, kit::student_implicit_kernels());
+    kit::BackwardEulerStepper newton(cloth, kit::ImplicitMethod::newton, exact,
+                                     kit::student_implicit_kernels());
     dv[solver == kit::ImplicitSolver::mg] = newton.velocity_change(cloth, 1.0 / 30);
     CHECK(newton.work.newton_unconverged == 0);
     CHECK(newton.last_newton_residual <= 1e-9);
@@ -410,8 +437,9 @@ TEST_CASE("multigrid: Newton's backward Euler with the multigrid PCG reaches the
 }
 
 TEST_CASE("multigrid: a matrix without the cloth's block pattern is refused", "[implicit][multigrid]") {
-  CHECK_THROWS_AS(kit::GridMultigrid(3, 3, kit::SparseMatrix(9, 9)), std::invalid_argument);  // 27 rows needed
-  kit::SparseMatrix scalar(27, 27);  // 27 rows, but no 3×3 blocks: only a diagonal
+  CHECK_THROWS_AS(kit::GridMultigrid(3, 3, kit::SparseMatrix(9, 9)),
+                  std::invalid_argument);  // 27 rows needed
+  kit::SparseMatrix scalar(27, 27);        // 27 rows, but no 3×3 blocks: only a diagonal
   for (int i = 0; i < 27; ++i) scalar.insert(i, i) = 1;
   scalar.makeCompressed();
   CHECK_THROWS_AS(kit::GridMultigrid(3, 3, scalar), std::invalid_argument);
@@ -468,23 +496,23 @@ TEST_CASE("chapter 7: the printed numbers are the ones measured") {
 
 TEST_CASE("chapter 7: an explicit method at the implicit step is reported as diverging, not a crash") {
   kit::test::TempDir out("ch07-explicit");
-  const json j = run_chapter({"--no-plot", "--integrator", "symplectic-euler", "--dt", "0.0333", "--t-end", "1"},
-                             out.path());
+  const json j = run_chapter(
+      {"--no-plot", "--integrator", "symplectic-euler", "--dt", "0.0333", "--t-end", "1"}, out.path());
   REQUIRE(j["divergences"].size() == 1);
   CHECK(j["divergences"][0]["run"] == "symplectic-euler");
 }
 
 TEST_CASE("chapter 7: bad flags are usage errors that name the flag") {
   kit::test::expect_usage_errors(binary, {
-      {{"--solver", "lu"}, "--solver"},
-      {{"--solver", "MG"}, "--solver"},
-      {{"--cg-tol", "0"}, "--cg-tol"},
-      {{"--cg-tol", "1"}, "--cg-tol"},
-      {{"--iterations", "0"}, "--iterations"},
-      {{"--integrator", "verlet"}, "--integrator"},
-      {{"--dt", "0"}, "--dt"},
-      {{"--scene", "tablecloth"}, "drape"},
-  });
+                                             {{"--solver", "lu"}, "--solver"},
+                                             {{"--solver", "MG"}, "--solver"},
+                                             {{"--cg-tol", "0"}, "--cg-tol"},
+                                             {{"--cg-tol", "1"}, "--cg-tol"},
+                                             {{"--iterations", "0"}, "--iterations"},
+                                             {{"--integrator", "verlet"}, "--integrator"},
+                                             {{"--dt", "0"}, "--dt"},
+                                             {{"--scene", "tablecloth"}, "drape"},
+                                         });
 }
 
 TEST_CASE("chapter 7: --quick runs every section on fewer stiffnesses and steps, and a trade over 1/3 s") {
@@ -494,7 +522,8 @@ TEST_CASE("chapter 7: --quick runs every section on fewer stiffnesses and steps,
   CHECK_FALSE(quick.contains("skipped"));
   std::set<double> sweep_k, cg_k, cg_h;
   for (const json& row : quick["stiffness"]) sweep_k.insert(row["stiffness"].get<double>());
-  for (const json& row : quick["solver"]) cg_k.insert(row["stiffness"].get<double>()), cg_h.insert(row["h"].get<double>());
+  for (const json& row : quick["solver"])
+    cg_k.insert(row["stiffness"].get<double>()), cg_h.insert(row["h"].get<double>());
   CHECK(sweep_k == std::set<double>{1e2, 1e4, 1e6});
   CHECK(quick["stiffness"].size() == 9);  // each K with linearised implicit Euler, Newton and Liu
   CHECK(cg_k == std::set<double>{1e2, 1e4, 1e6});

@@ -33,7 +33,8 @@ const json& default_run() {
 double number(const json& value) { return value.is_number() ? double(value) : NAN; }  // null, "diverged": NaN
 }  // namespace
 
-TEST_CASE("chapter 8: the midpoint and RK4 flip the T-handle as GSL does, at the closed form's interval within 1e-5") {
+TEST_CASE("chapter 8: the midpoint and RK4 flip the T-handle as GSL does, at the closed form's interval "
+          "within 1e-5") {
   const json& s = default_run();
   const double closed_form = double(s["body"]["interval"]);
   CHECK(closed_form == Approx(1.67598).epsilon(1e-5));  // half of 4K(k)/λ, Landau & Lifshitz §37
@@ -64,8 +65,10 @@ TEST_CASE("chapter 8: spun about its smallest axis nothing flips, in the referen
   CHECK(run_chapter({"--body", "cylinder", "--trade-steps", "100"})["body"]["interval"].is_null());
 }
 
-TEST_CASE("chapter 8: where the midpoint's fixed point stalls (h|ω| ~ 1.5) it splits the step and still keeps E") {
-  const json s = run_chapter({"--dt", "0.05", "--omega0", "30,0,0.3", "--t-end", "2", "--trade-steps", "100"});
+TEST_CASE(
+    "chapter 8: where the midpoint's fixed point stalls (h|ω| ~ 1.5) it splits the step and still keeps E") {
+  const json s =
+      run_chapter({"--dt", "0.05", "--omega0", "30,0,0.3", "--t-end", "2", "--trade-steps", "100"});
   const json& m = s["integrators"]["midpoint"];
   CHECK(long(m["unconverged_steps"]) > 0);
   CHECK(double(m["energy_drift"]) < 1e-13);
@@ -87,13 +90,14 @@ TEST_CASE("chapter 8: what each integrator keeps: R on SO(3), |L| exactly, the e
   }
   CHECK(double(i["euler-R"]["body_momentum_drift"]) > 0.1);
   CHECK(double(i["rk4"]["momentum_drift"]) < 1e-10);
-  CHECK(double(i["rk4"]["momentum_drift"]) > 1e-13);  // not a conserved quantity of RK4
+  CHECK(double(i["rk4"]["momentum_drift"]) > 1e-13);     // not a conserved quantity of RK4
   CHECK(double(i["midpoint"]["energy_drift"]) < 1e-13);  // a quadratic invariant the midpoint rule keeps
   CHECK(double(i["rk4"]["energy_drift"]) < 1e-10);
   CHECK(double(i["euler-q"]["energy_drift"]) > 0.1);
 }
 
-TEST_CASE("chapter 8: spun about its largest or smallest axis the T-handle stays; about the middle one it flips") {
+TEST_CASE(
+    "chapter 8: spun about its largest or smallest axis the T-handle stays; about the middle one it flips") {
   const json& axes = default_run()["axes"];
   REQUIRE(axes.size() == 3);
   int intermediates = 0;
@@ -111,7 +115,8 @@ TEST_CASE("chapter 8: spun about its largest or smallest axis the T-handle stays
   CHECK(intermediates == 1);
 }
 
-TEST_CASE("chapter 8: the midpoint and RK4 flip 6 times up to h = 30 ms; the first-order steps never get the rate") {
+TEST_CASE("chapter 8: the midpoint and RK4 flip 6 times up to h = 30 ms; the first-order steps never get the "
+          "rate") {
   for (const json& row : default_run()["flip_sweep"]) {
     const std::string name = row["integrator"];
     INFO(row.dump());
@@ -126,7 +131,8 @@ TEST_CASE("chapter 8: the midpoint and RK4 flip 6 times up to h = 30 ms; the fir
 
 TEST_CASE("chapter 8: the trade shows orders 4 and 2, and RK4's round-off floor") {
   std::map<std::string, std::map<long, double>> error;
-  for (const json& row : default_run()["trade"]) error[row["integrator"]][long(row["steps"])] = number(row["error"]);
+  for (const json& row : default_run()["trade"])
+    error[row["integrator"]][long(row["steps"])] = number(row["error"]);
   // Ten times the steps: RK4's error falls by about 10⁴, the midpoint's by 10² (asymptotic range).
   CHECK(error["rk4"][1000] / error["rk4"][100] == Approx(1e-4).epsilon(0.3));
   CHECK(error["midpoint"][10'000] / error["midpoint"][1000] == Approx(1e-2).epsilon(0.1));
@@ -138,7 +144,8 @@ TEST_CASE("chapter 8: the trade shows orders 4 and 2, and RK4's round-off floor"
   }
 }
 
-TEST_CASE("chapter 8: a box dropped flat rises to e² of its fall, never stays in the ground, gains no energy, rests") {
+TEST_CASE("chapter 8: a box dropped flat rises to e² of its fall, never stays in the ground, gains no "
+          "energy, rests") {
   for (const auto& [e, mu] : {std::pair{0.5, 0.3}, std::pair{0.8, 0.0}, std::pair{0.0, 1.0}}) {
     const json s = run_chapter({"--restitution", std::to_string(e), "--friction", std::to_string(mu),
                                 "--trade-steps", "1000", "--t-end", "2"});
@@ -146,31 +153,33 @@ TEST_CASE("chapter 8: a box dropped flat rises to e² of its fall, never stays i
       const json& d = s[name];
       INFO("e = " << e << ", μ = " << mu << ", " << name << ": " << d.dump());
       CHECK(double(d["impulse_gain"]) <= 1e-12);  // the impulses never add motion [J]
-      CHECK(double(d["deepest"]) < 0.005);   // within a step: at most about h·√(2 g) = 4.4 mm
+      CHECK(double(d["deepest"]) < 0.005);        // within a step: at most about h·√(2 g) = 4.4 mm
       // A contact adds energy only through the lift out of the ground: at most M g (1 + e) × depth [J].
       CHECK(double(d["gain"]) <= 1.0 * 9.81 * (1 + e) * double(d["deepest"]));
       CHECK(double(d["total"]) < double(d["start_total"]));  // and never more than it lost
       // At rest on a face after 6 s; without friction nothing stops a tilted box from turning
       // about the vertical once it lands, so only the flat one must rest.
       if (mu > 0 || std::string(name) == "drop") {
-        CHECK(double(d["kinetic"]) < 1e-20);  // [J]
+        CHECK(double(d["kinetic"]) < 1e-20);                                      // [J]
         CHECK(double(d["height"]) == Approx(double(d["resting"])).margin(1e-5));  // on a face, to 10 µm
       }
     }
     CHECK(double(s["drop"]["rise"]) == Approx(e * e).margin(0.01));
-    CHECK(double(s["drop"]["friction"]) < 1e-9);  // a flat drop does not slide
+    CHECK(double(s["drop"]["friction"]) < 1e-9);                             // a flat drop does not slide
     if (e > 0 && mu > 0) CHECK(double(s["drop_tilted"]["friction"]) > 0.1);  // the tilted one does [N·s]
   }
 }
 
 TEST_CASE("chapter 8: the scene run writes a PNG and an OBJ per frame, and every figure") {
   kit::test::TempDir out("ch08-frames");
-  const auto result = kit::test::run_process(binary, {"--json", "--frames", "3", "--t-end", "2", "--format", "png",
-                                                      "--trade-steps", "1000", "--out", out.path().string()});
+  const auto result =
+      kit::test::run_process(binary, {"--json", "--frames", "3", "--t-end", "2", "--format", "png",
+                                      "--trade-steps", "1000", "--out", out.path().string()});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   const json s = json::parse(result.out);
-  for (const char* figure : {"flips", "drift", "orthonormality", "axes", "trade-timing", "drop", "drop_tilted"}) {
+  for (const char* figure :
+       {"flips", "drift", "orthonormality", "axes", "trade-timing", "drop", "drop_tilted"}) {
     INFO(figure);
     CHECK(s["figures"].contains(figure));
   }
@@ -179,47 +188,64 @@ TEST_CASE("chapter 8: the scene run writes a PNG and an OBJ per frame, and every
     long pngs = 0, objs = 0;
     for (const auto& file : kit::test::files_under(out.path())) {
       const std::string path = file.string();
-      if (path.find(std::string("/") + stem + "_frames/") != std::string::npos && file.extension() == ".png") ++pngs;
-      if (path.find(std::string("/") + stem + "_meshes/") != std::string::npos && file.extension() == ".obj") ++objs;
+      if (path.find(std::string("/") + stem + "_frames/") != std::string::npos && file.extension() == ".png")
+        ++pngs;
+      if (path.find(std::string("/") + stem + "_meshes/") != std::string::npos && file.extension() == ".obj")
+        ++objs;
     }
     CHECK(pngs == 4);  // frames 0 … 3
     CHECK(objs == 4);
   }
 }
 
-TEST_CASE("chapter 8: explicit Euler on R at a large step diverges: a reported result, exit 0, or 3 when asked") {
-  const json s = run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20", "--trade-steps", "100"});
+TEST_CASE(
+    "chapter 8: explicit Euler on R at a large step diverges: a reported result, exit 0, or 3 when asked") {
+  const json s =
+      run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20", "--trade-steps", "100"});
   REQUIRE(s.contains("divergences"));
   CHECK(long(s["scene"]["flips"]) != 6);
   CHECK(s["trade"].size() == 6);  // --trade-steps 100: one run of each integrator
   run_chapter({"--integrator", "euler-R", "--dt", "0.05", "--t-end", "20", "--trade-steps", "100",
-               "--fail-on-divergence"}, 3);
+               "--fail-on-divergence"},
+              3);
 }
 
-TEST_CASE("chapter 8: the exponential map keeps RᵀR = I to round-off over 10⁶ steps; Euler on R drifts by h² a step") {
+TEST_CASE("chapter 8: the exponential map keeps RᵀR = I to round-off over 10⁶ steps; Euler on R drifts by h² "
+          "a step") {
   // In process, through the chapter's own wiring of the reference solutions (rigid_kernels.hpp).
   const kit::RigidKernels kernels = kit::student_rigid_kernels();
   const kit::RigidShape shape = kit::t_handle_shape(0.5);
   kit::RigidState exact = kit::spinning_state(shape, kit::Vec3::Zero(), kit::Vec3(10, 0, 0.1)), euler = exact;
   const double h = 1e-5;  // 10 s in 10⁶ steps
   using kit::RotationIntegrator;
-  for (long k = 0; k < 1'000'000; ++k) kit::rotation_step(kernels, RotationIntegrator::exponential_map, shape, exact, h);
-  for (long k = 0; k < 1'000; ++k) kit::rotation_step(kernels, RotationIntegrator::euler_matrix, shape, euler, h);
+  for (long k = 0; k < 1'000'000; ++k)
+    kit::rotation_step(kernels, RotationIntegrator::exponential_map, shape, exact, h);
+  for (long k = 0; k < 1'000; ++k)
+    kit::rotation_step(kernels, RotationIntegrator::euler_matrix, shape, euler, h);
   // Round-off of about 1e-16 a step, accumulated: far below the 1e-3 · h|ω|² growth of Euler on R.
   CHECK(kit::orthonormality_error(exact.R) < 1e-10);
   CHECK(kit::orthonormality_error(euler.R) > 1e-7);  // 1000 steps of h²|ω|² = 1e-8 each
 }
 
 TEST_CASE("chapter 8 answers bad input with exit 2, a message naming the flag, and no file") {
-  kit::test::expect_usage_errors(
-      binary, {{{"--omega0", "1,2"}, "--omega0"}, {{"--omega0", "a,b,c"}, "--omega0"},
-               {{"--omega0", "0,0,0"}, "--omega0"}, {{"--omega0", "0x10,0,0"}, "--omega0"},
-               {{"--omega0", "1e400,0,0"}, "out of range"},
-               {{"--omega0", "1e5,0,0"}, "--omega0"}, {{"--omega0", "1,2,3,"}, "--omega0"},
-               {{"--omega0", "nan,0,1"}, "--omega0"}, {{"--dt", "0"}, "--dt"}, {{"--dt", "0.2"}, "--dt"},
-               {{"--t-end", "0"}, "--t-end"}, {{"--restitution", "1.5"}, "--restitution"},
-               {{"--friction", "-1"}, "--friction"}, {{"--integrator", "verlet"}, "--integrator"},
-               {{"--body", "sphere"}, "--body"}, {{"--frames", "-1"}, "--frames"},
-               {{"--dt", "0.05", "--t-end", "0.01"}, "--dt"}, {{"--t-end", "1e5", "--dt", "1e-4"}, "over the limit"},
-               {{"--trade-steps", "99"}, "--trade-steps"}, {{"--trade-steps", "10000001"}, "--trade-steps"}});
+  kit::test::expect_usage_errors(binary, {{{"--omega0", "1,2"}, "--omega0"},
+                                          {{"--omega0", "a,b,c"}, "--omega0"},
+                                          {{"--omega0", "0,0,0"}, "--omega0"},
+                                          {{"--omega0", "0x10,0,0"}, "--omega0"},
+                                          {{"--omega0", "1e400,0,0"}, "out of range"},
+                                          {{"--omega0", "1e5,0,0"}, "--omega0"},
+                                          {{"--omega0", "1,2,3,"}, "--omega0"},
+                                          {{"--omega0", "nan,0,1"}, "--omega0"},
+                                          {{"--dt", "0"}, "--dt"},
+                                          {{"--dt", "0.2"}, "--dt"},
+                                          {{"--t-end", "0"}, "--t-end"},
+                                          {{"--restitution", "1.5"}, "--restitution"},
+                                          {{"--friction", "-1"}, "--friction"},
+                                          {{"--integrator", "verlet"}, "--integrator"},
+                                          {{"--body", "sphere"}, "--body"},
+                                          {{"--frames", "-1"}, "--frames"},
+                                          {{"--dt", "0.05", "--t-end", "0.01"}, "--dt"},
+                                          {{"--t-end", "1e5", "--dt", "1e-4"}, "over the limit"},
+                                          {{"--trade-steps", "99"}, "--trade-steps"},
+                                          {{"--trade-steps", "10000001"}, "--trade-steps"}});
 }

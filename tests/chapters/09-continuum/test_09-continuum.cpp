@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
 #include <Eigen/Eigenvalues>
 #include <kit_catch.hpp>
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <kit/cloth/obj_mesh.hpp>
@@ -42,8 +42,8 @@ TEST_CASE("chapter 9: the cantilever converges to the 2-D answer at order 2, wit
   CHECK(double(s["material"]["mu"]) == Approx(1e9 / 2.6).epsilon(1e-14));
   CHECK(double(s["material"]["tip"]) == Approx(1.4715).epsilon(1e-12));  // mm: 1.5 ρ g L⁴ / (E h²)
   // ω1 = 1.87510407² √(E I / (ρ A L⁴)) with I/A = h²/12.
-  CHECK(double(s["material"]["omega"]) == Approx(1.87510407 * 1.87510407 * std::sqrt(1e9 * 0.01 / 12 / 1000))
-                                              .epsilon(1e-12));
+  CHECK(double(s["material"]["omega"]) ==
+        Approx(1.87510407 * 1.87510407 * std::sqrt(1e9 * 0.01 / 12 / 1000)).epsilon(1e-12));
   // Timoshenko adds the shear: (E / (3 κ G)) (h / L)² = 2.6 / 2.5 × 1% = 1.04% more.
   CHECK(double(s["cantilever"]["above"]) == Approx(1.04).epsilon(1e-9));
   for (const char* model : {"linear", "stvk"}) {
@@ -62,7 +62,8 @@ TEST_CASE("chapter 9: the cantilever converges to the 2-D answer at order 2, wit
   CHECK(double(s["cantilever"]["springs"]["vs_fem"]) < -14);
   // From below: every mesh but the finest is too stiff, and the error shrinks with each refinement.
   const json& meshes = s["cantilever"]["meshes"];
-  for (std::size_t k = 1; k < meshes.size(); ++k) CHECK(double(meshes[k]["stvk"]) > double(meshes[k - 1]["stvk"]));
+  for (std::size_t k = 1; k < meshes.size(); ++k)
+    CHECK(double(meshes[k]["stvk"]) > double(meshes[k - 1]["stvk"]));
   // At 1.5 mm of sag on 1 m the geometric nonlinearity is below 1e-5 of the tip.
   for (const auto& row : meshes) CHECK(std::abs(double(row["stvk"]) - double(row["linear"])) < 1e-5);
   // The springs settle 14 to 16% short, however fine the mesh.
@@ -72,7 +73,8 @@ TEST_CASE("chapter 9: the cantilever converges to the 2-D answer at order 2, wit
   }
 }
 
-TEST_CASE("chapter 9: a rigid turn has no Green strain and no StVK force; the small strain is √2 (1 − cos θ)") {
+TEST_CASE(
+    "chapter 9: a rigid turn has no Green strain and no StVK force; the small strain is √2 (1 − cos θ)") {
   const json& rows = default_run()["turns"]["rows"];
   REQUIRE(rows.size() == 37);
   for (const auto& r : rows) {
@@ -86,11 +88,14 @@ TEST_CASE("chapter 9: a rigid turn has no Green strain and no StVK force; the sm
     // forces are in that ratio (Dm = 0.1 I for both).
     const double lambda = 1e9 * 0.3 / 0.91, mu = 1e9 / 2.6;
     CHECK(double(r["linear_force"]) ==
-          Approx(2 * (lambda + mu) * (1 - std::cos(theta)) / (0.01 * (lambda + 2 * mu))).margin(1e-12).epsilon(1e-12));
+          Approx(2 * (lambda + mu) * (1 - std::cos(theta)) / (0.01 * (lambda + 2 * mu)))
+              .margin(1e-12)
+              .epsilon(1e-12));
   }
 }
 
-TEST_CASE("chapter 9: spun, St Venant–Kirchhoff turns the plate rigidly; the linear plate flies apart as closed form") {
+TEST_CASE("chapter 9: spun, St Venant–Kirchhoff turns the plate rigidly; the linear plate flies apart as "
+          "closed form") {
   const json& plate = default_run()["plate"];
   for (const char* model : {"stvk", "springs"}) {
     INFO(model);
@@ -99,7 +104,7 @@ TEST_CASE("chapter 9: spun, St Venant–Kirchhoff turns the plate rigidly; the l
     // the rebound of a plate started unstretched.
     CHECK(double(plate[model]["strain"]) < 1.5e-6);
     CHECK(double(plate[model]["strain"]) > 1e-7);
-    CHECK(std::abs(double(plate[model]["energy_change"])) < 1e-6);       // symplectic Euler
+    CHECK(std::abs(double(plate[model]["energy_change"])) < 1e-6);  // symplectic Euler
     CHECK_FALSE(bool(plate[model]["diverged"]));
   }
   // The linear model's infinitesimal rotation v0 = ω × (X − c) is a zero-energy mode: K v0 = 0,
@@ -118,7 +123,8 @@ TEST_CASE("chapter 9: FEM's stretch does not care for the triangulation, the spr
   for (const auto& r : rows["stvk"]) {
     INFO("n = " << int(r["n"]));
     CHECK(double(r["difference"]) < 0.004 * 4 / double(r["n"]));  // a bound that halves with each refinement
-    CHECK(double(r["regular"]) > 0.98);  // the clamp holds the sheet from narrowing: a little stiffer than 1-D
+    CHECK(double(r["regular"]) >
+          0.98);  // the clamp holds the sheet from narrowing: a little stiffer than 1-D
     CHECK(double(r["regular"]) < 0.99);
   }
   CHECK(double(rows["stvk"].back()["difference"]) < double(rows["stvk"].front()["difference"]) / 20);
@@ -144,21 +150,24 @@ TEST_CASE("chapter 9: every StVK solver finds the same tip; what each one counts
     CHECK(long(newton[k]["steps"]) <= 5);
     CHECK(long(implicit_runs[k]["steps"]) == 60);
     // The PCG's iterations grow with the mesh (the condition number as h⁻²): at least 1.5 times.
-    if (k > 0) CHECK(double(implicit_runs[k]["iterations"]) > 1.5 * double(implicit_runs[k - 1]["iterations"]));
+    if (k > 0)
+      CHECK(double(implicit_runs[k]["iterations"]) > 1.5 * double(implicit_runs[k - 1]["iterations"]));
   }
   // The explicit step shrinks with the cell: twice the cells through the height, twice the steps.
   for (std::size_t k = 2; k < 4; ++k)
-    CHECK(double(explicit_runs[k]["steps"]) / double(explicit_runs[k - 1]["steps"]) == Approx(2).epsilon(0.02));
+    CHECK(double(explicit_runs[k]["steps"]) / double(explicit_runs[k - 1]["steps"]) ==
+          Approx(2).epsilon(0.02));
   CHECK(long(by["linear/static Newton"][0]["steps"]) <= 2);  // one solve, one check of round-off
 }
 
-TEST_CASE("chapter 9: implicit Euler damps the spin; explicit Euler past its limit diverges, a reported result") {
+TEST_CASE(
+    "chapter 9: implicit Euler damps the spin; explicit Euler past its limit diverges, a reported result") {
   const json implicit = run_chapter({"--integrator", "implicit", "--dt", "0.01", "--t-end", "1"});
   const json& stvk = implicit["plate"]["stvk"];
   CHECK(long(stvk["steps"]) == 100);
   CHECK(double(stvk["energy_change"]) < -0.99);  // as the README says: 99.8% of the spin's energy is gone
-  CHECK(double(stvk["angle"]) < 0.3);  // and it turns by 0.24 rad where π was due
-  CHECK(double(stvk["strain"]) < 1e-4);  // but it stays a plate
+  CHECK(double(stvk["angle"]) < 0.3);            // and it turns by 0.24 rad where π was due
+  CHECK(double(stvk["strain"]) < 1e-4);          // but it stays a plate
   // The linear plate's motion is force-free: implicit Euler follows it exactly.
   CHECK(double(implicit["plate"]["linear"]["angle"]) == Approx(std::atan(M_PI)).epsilon(1e-9));
   CHECK_FALSE(bool(implicit["plate"]["linear"]["diverged"]));
@@ -170,13 +179,13 @@ TEST_CASE("chapter 9: implicit Euler damps the spin; explicit Euler past its lim
 
 TEST_CASE("chapter 9: --frames writes one OBJ mesh a frame, the first at rest, every one readable") {
   kit::test::TempDir out("ch09-frames");
-  const auto result = kit::test::run_process(
-      binary, {"--json", "--frames", "4", "--resolution", "4", "--format", "png", "--out", out.path().string()});
+  const auto result = kit::test::run_process(binary, {"--json", "--frames", "4", "--resolution", "4",
+                                                      "--format", "png", "--out", out.path().string()});
   INFO(result.err);
   REQUIRE(result.exit_code == 0);
   const json s = json::parse(result.out);
-  for (const char* figure :
-       {"turned-element", "spinning-plate", "plate-shapes", "cantilever", "mesh-dependence", "trade-timing"}) {
+  for (const char* figure : {"turned-element", "spinning-plate", "plate-shapes", "cantilever",
+                             "mesh-dependence", "trade-timing"}) {
     INFO(figure);
     CHECK(s["figures"].contains(figure));
   }
@@ -189,7 +198,8 @@ TEST_CASE("chapter 9: --frames writes one OBJ mesh a frame, the first at rest, e
   }
 }
 
-TEST_CASE("chapter 9 (in process): each model's stiffness is the derivative of its forces; a membrane hangs in 3-D") {
+TEST_CASE("chapter 9 (in process): each model's stiffness is the derivative of its forces; a membrane hangs "
+          "in 3-D") {
   const kit::ContinuumKernels kernels = kit::student_continuum_kernels();
   for (const kit::FemModel model : {kit::FemModel::linear, kit::FemModel::stvk, kit::FemModel::springs}) {
     INFO(kit::model_name(model));
@@ -238,7 +248,7 @@ TEST_CASE("chapter 9 (in process): each model's stiffness is the derivative of i
   CHECK(sheet.x.allFinite());
   CHECK(sheet.v.cwiseAbs().maxCoeff() < 1e-6);  // at rest [m/s]
   CHECK(kit::load_residual(sheet) < 1e-6);      // its forces balance its weight
-  CHECK(sheet.x.col(1).minCoeff() < -1e-4);        // the bottom edge has sagged below y = 0
+  CHECK(sheet.x.col(1).minCoeff() < -1e-4);     // the bottom edge has sagged below y = 0
   // It moved out of its plane [m], and rests with a bulge of 7 mm: a membrane has no bending
   // stiffness, and where its weight leaves it slack nothing flattens it.
   CHECK(out_of_plane > 5e-3);
@@ -246,7 +256,8 @@ TEST_CASE("chapter 9 (in process): each model's stiffness is the derivative of i
   CHECK(sheet.largest_green_strain() < 0.05);
 }
 
-TEST_CASE("chapter 9: a 95 s spin is unwrapped step by step: StVK turns 95π; the growing linear plate is no divergence") {
+TEST_CASE("chapter 9: a 95 s spin is unwrapped step by step: StVK turns 95π; the growing linear plate is no "
+          "divergence") {
   const json s = run_chapter({"--resolution", "2", "--t-end", "95", "--frames", "0"});
   CHECK(double(s["plate"]["stvk"]["angle"]) == Approx(95 * M_PI).epsilon(1e-4));
   CHECK(double(s["plate"]["springs"]["angle"]) == Approx(95 * M_PI).epsilon(1e-4));
@@ -255,7 +266,8 @@ TEST_CASE("chapter 9: a 95 s spin is unwrapped step by step: StVK turns 95π; th
   CHECK_FALSE(s.contains("divergences"));
 }
 
-TEST_CASE("chapter 9 (in process): the explicit step limit is below the true 2/ω_max, within a factor of three") {
+TEST_CASE(
+    "chapter 9 (in process): the explicit step limit is below the true 2/ω_max, within a factor of three") {
   const kit::ContinuumKernels kernels = kit::student_continuum_kernels();
   for (const kit::FemModel model : {kit::FemModel::linear, kit::FemModel::stvk, kit::FemModel::springs})
     for (const kit::MeshKind mesh : {kit::MeshKind::regular, kit::MeshKind::irregular}) {
@@ -270,8 +282,10 @@ TEST_CASE("chapter 9 (in process): the explicit step limit is below the true 2/�
       Eigen::MatrixXd reduced(free.size(), free.size());
       for (std::size_t r = 0; r < free.size(); ++r)
         for (std::size_t c = 0; c < free.size(); ++c)
-          reduced(r, c) = -dense(free[r], free[c]) / std::sqrt(body.masses[free[r] / 3] * body.masses[free[c] / 3]);
-      const double omega_max = std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(reduced).eigenvalues().maxCoeff());
+          reduced(r, c) =
+              -dense(free[r], free[c]) / std::sqrt(body.masses[free[r] / 3] * body.masses[free[c] / 3]);
+      const double omega_max =
+          std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(reduced).eigenvalues().maxCoeff());
       const double limit = kit::explicit_step_limit(body);
       CHECK(limit <= 2 / omega_max * (1 + 1e-12));
       CHECK(limit >= 2 / omega_max / 3);

@@ -55,7 +55,8 @@ TEST_CASE("a bad value is a usage error naming the flag, the value and the range
     INFO("--dt " << bad << " -> " << outcome.err);
     CHECK(outcome.code == 2);
     CHECK_FALSE(outcome.body_ran);
-    CHECK_THAT(outcome.err, ContainsSubstring("--dt") && ContainsSubstring(bad) && ContainsSubstring("(0, 10]"));
+    CHECK_THAT(outcome.err,
+               ContainsSubstring("--dt") && ContainsSubstring(bad) && ContainsSubstring("(0, 10]"));
   }
 }
 
@@ -69,9 +70,10 @@ TEST_CASE("a whole number may be written as a number (1e2), never as a fraction,
   const auto written_as_number = run_app({"--count", "1e2", "--quiet", "--no-plot"});
   CHECK(written_as_number.code == 0);
   CHECK(written_as_number.summary["parameters"]["count"].get<long>() == 100);
-  CHECK(run_app({"--count", "2.5e1", "--quiet", "--no-plot"}).summary["parameters"]["count"].get<long>() == 25);
-  for (const std::string refused : {"2.5", "1e3", "0x10", "010", "1e", "inf", "nan", "12abc", "2.0000000000000001",
-                                    "1e-400", " 5", "99999999999999999999"}) {
+  CHECK(run_app({"--count", "2.5e1", "--quiet", "--no-plot"}).summary["parameters"]["count"].get<long>() ==
+        25);
+  for (const std::string refused : {"2.5", "1e3", "0x10", "010", "1e", "inf", "nan", "12abc",
+                                    "2.0000000000000001", "1e-400", " 5", "99999999999999999999"}) {
     const auto outcome = run_app({"--count", refused});
     INFO(refused << ": " << outcome.err);
     CHECK(outcome.code == 2);
@@ -120,19 +122,22 @@ TEST_CASE("a UsageError thrown by the body exits 2, any other failure exits 1") 
   const char* argv[] = {"toy", "--quiet"};
   std::ostringstream captured;
   auto* old = std::cerr.rdbuf(captured.rdbuf());
-  const int usage = app.run(2, argv, [] { throw kit::UsageError("--t-end must be a whole number of steps"); });
+  const int usage =
+      app.run(2, argv, [] { throw kit::UsageError("--t-end must be a whole number of steps"); });
   kit::ChapterApp app2("toy", "unused", "toy");
   const int failure = app2.run(2, argv, [] { throw std::runtime_error("solver failed"); });
   std::cerr.rdbuf(old);
   CHECK(usage == 2);
   CHECK(failure == 1);
-  CHECK_THAT(captured.str(), ContainsSubstring("whole number of steps") && ContainsSubstring("solver failed"));
+  CHECK_THAT(captured.str(),
+             ContainsSubstring("whole number of steps") && ContainsSubstring("solver failed"));
 }
 
 TEST_CASE("a bad --out is refused with exit 2 before the body runs: empty, a file, below a file") {
   kit::test::TempDir dir("cli-out");
   std::ofstream(dir.path() / "a-file") << "x";
-  for (const std::string& bad : {std::string(""), (dir.path() / "a-file").string(), (dir.path() / "a-file" / "sub").string()}) {
+  for (const std::string& bad :
+       {std::string(""), (dir.path() / "a-file").string(), (dir.path() / "a-file" / "sub").string()}) {
     const auto outcome = run_app({"--out", bad, "--quiet"});
     INFO("--out '" << bad << "' -> " << outcome.err);
     CHECK(outcome.code == 2);

@@ -59,7 +59,8 @@ TEST_CASE("the script carries the titles, axis labels, legend and log scales") {
   CHECK_THAT(script, ContainsSubstring("title \"exact\""));
   // The empty series keeps its data block (index 1), so later indices hold, but is not plotted.
   CHECK_THAT(script, !ContainsSubstring("data index 1 "));
-  CHECK_THAT(script, ContainsSubstring("index 2 using 1:(($2>=1e-280&&$2<=1e280)?$2:NaN) with points title \"measured\""));
+  CHECK_THAT(script, ContainsSubstring(
+                         "index 2 using 1:(($2>=1e-280&&$2<=1e280)?$2:NaN) with points title \"measured\""));
   CHECK_THAT(script, ContainsSubstring("set logscale y"));
 }
 
@@ -70,8 +71,8 @@ TEST_CASE("a slide author can redraw a figure from its folder with plain gnuplot
   options.formats = {"png"};
   kit::write_figure(sample_figure(), options);
   std::filesystem::remove(dir.path() / "sample.png");
-  const std::string command = "cd " + kit::test::shell_quote(dir.path().string()) +
-                              " && gnuplot -e \"fmt='svg'\" sample.gp 2>&1";
+  const std::string command =
+      "cd " + kit::test::shell_quote(dir.path().string()) + " && gnuplot -e \"fmt='svg'\" sample.gp 2>&1";
   REQUIRE(std::system(command.c_str()) == 0);
   CHECK_THAT(slurp(dir.path() / "sample.svg"), ContainsSubstring("<svg"));
 }
@@ -127,7 +128,8 @@ TEST_CASE("text with backquotes reaches gnuplot as text: no command in a title, 
   kit::Figure fig("scene", std::string("scene `touch ") + marker("title") + "`");
   auto& p = fig.panel(std::string("x `touch ") + marker("xlabel") + "` [m]", "y [m]", "panel");
   p.line(std::string("series `touch ") + marker("legend") + "`", {0, 1}, {0, 1});
-  p.commands.push_back("set xtics (" + kit::gnuplot_string(std::string("`touch ") + marker("tic") + "`") + " 0.5)");
+  p.commands.push_back("set xtics (" + kit::gnuplot_string(std::string("`touch ") + marker("tic") + "`") +
+                       " 0.5)");
   kit::FigureOptions options;
   options.dir = dir.path() / "out";
   options.formats = {"png"};
@@ -179,7 +181,8 @@ TEST_CASE("a series of a million points is thinned to the extremes of 1000 slice
   CHECK(kit::plotted_indices(small).size() == 3);
   // A phase portrait (x = cos, y = sin over many turns) keeps its x extremes too: not a line.
   kit::Series phase;
-  for (int i = 0; i < 1'000'000; ++i) phase.x.push_back(std::cos(i * 0.01)), phase.y.push_back(std::sin(i * 0.01));
+  for (int i = 0; i < 1'000'000; ++i)
+    phase.x.push_back(std::cos(i * 0.01)), phase.y.push_back(std::sin(i * 0.01));
   double lowest_x = 1;
   for (std::size_t i : kit::plotted_indices(phase)) lowest_x = std::min(lowest_x, phase.x[i]);
   CHECK(lowest_x < -0.999);

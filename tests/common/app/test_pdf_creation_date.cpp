@@ -23,9 +23,11 @@ std::string creation_date(const std::string& pdf) {
   std::smatch m;
   if (std::regex_search(pdf, m, date)) return m[1];
   static const std::regex object_stream(R"(/Type /ObjStm[^>]*>>\nstream\n)");
-  for (auto it = std::sregex_iterator(pdf.begin(), pdf.end(), object_stream); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(pdf.begin(), pdf.end(), object_stream); it != std::sregex_iterator();
+       ++it) {
     const auto data = std::size_t(it->position() + it->length());
-    const std::string plain = kit::pdf_inflate(std::string_view(pdf).substr(data, pdf.find("\nendstream", data) - data));
+    const std::string plain =
+        kit::pdf_inflate(std::string_view(pdf).substr(data, pdf.find("\nendstream", data) - data));
     if (std::regex_search(plain, m, date)) return m[1];
   }
   return "";
@@ -38,7 +40,8 @@ std::vector<std::string> wrong_offsets(const std::string& pdf) {
   const auto startxref = std::stoul(pdf.substr(pdf.rfind("startxref") + 9));
   auto at_object = [&](std::size_t offset, std::size_t number) {
     const std::string header = std::to_string(number) + " 0 obj";
-    if (pdf.compare(offset, header.size(), header) != 0) wrong.push_back(header + " is not at " + std::to_string(offset));
+    if (pdf.compare(offset, header.size(), header) != 0)
+      wrong.push_back(header + " is not at " + std::to_string(offset));
   };
   std::smatch m;
   if (pdf.compare(startxref, 4, "xref") == 0) {  // classic: "xref\n0 N\n" then N lines of 20 bytes
@@ -50,13 +53,17 @@ std::vector<std::string> wrong_offsets(const std::string& pdf) {
     return wrong;
   }
   const std::string dictionary = pdf.substr(startxref, pdf.find("stream", startxref) - startxref);
-  if (!std::regex_search(dictionary, m, std::regex(R"(/W \[(\d) (\d) (\d)\])"))) return {"no /W in the xref stream"};
-  const std::size_t a = std::stoul(m[1].str()), b = std::stoul(m[2].str()), row = a + b + std::stoul(m[3].str());
+  if (!std::regex_search(dictionary, m, std::regex(R"(/W \[(\d) (\d) (\d)\])")))
+    return {"no /W in the xref stream"};
+  const std::size_t a = std::stoul(m[1].str()), b = std::stoul(m[2].str()),
+                    row = a + b + std::stoul(m[3].str());
   const auto data = pdf.find("\nstream\n", startxref) + 8;
-  const std::string table = kit::pdf_inflate(std::string_view(pdf).substr(data, pdf.find("\nendstream", data) - data));
+  const std::string table =
+      kit::pdf_inflate(std::string_view(pdf).substr(data, pdf.find("\nendstream", data) - data));
   auto field = [&](std::size_t r, std::size_t at, std::size_t width) {
     std::size_t value = 0;
-    for (std::size_t i = 0; i < width; ++i) value = value << 8 | static_cast<unsigned char>(table[r * row + at + i]);
+    for (std::size_t i = 0; i < width; ++i)
+      value = value << 8 | static_cast<unsigned char>(table[r * row + at + i]);
     return value;
   };
   for (std::size_t k = 0; k < table.size() / row; ++k)
@@ -73,10 +80,12 @@ std::string cairo_118_pdf(const std::string& date) {
   pdf += "1 0 obj\n<< /Type /Catalog /Pages 2 0 R >>\nendobj\n";
   offset[2] = pdf.size();
   pdf += "2 0 obj\n<< /Type /Pages /Kids [ ] /Count 0 >>\nendobj\n";
-  const std::string info = "5 0\n<< /Producer (cairo 1.18.4 (https://cairographics.org))\n   /CreationDate (D:" + date + ")\n>>\n";
+  const std::string info =
+      "5 0\n<< /Producer (cairo 1.18.4 (https://cairographics.org))\n   /CreationDate (D:" + date + ")\n>>\n";
   const std::string objects = kit::pdf_deflate(info);
   offset[3] = pdf.size();
-  pdf += "3 0 obj\n<< /Type /ObjStm\n   /Length 4 0 R\n   /N 1\n   /First 4\n   /Filter /FlateDecode\n>>\nstream\n" +
+  pdf += "3 0 obj\n<< /Type /ObjStm\n   /Length 4 0 R\n   /N 1\n   /First 4\n   /Filter "
+         "/FlateDecode\n>>\nstream\n" +
          objects + "\nendstream\nendobj\n";
   offset[4] = pdf.size();
   pdf += "4 0 obj\n   " + std::to_string(objects.size()) + "\nendobj\n";
@@ -92,16 +101,18 @@ std::string cairo_118_pdf(const std::string& date) {
     table += char(third & 0xff);
   }
   const std::string xref = kit::pdf_deflate(table);
-  pdf += "6 0 obj\n<< /Type /XRef\n   /Length " + std::to_string(xref.size()) +
-         "\n   /Filter /FlateDecode\n   /Size 7\n   /W [1 2 2]\n   /Root 1 0 R\n   /Info 5 0 R\n>>\nstream\n" + xref +
-         "\nendstream\nendobj\nstartxref\n" + std::to_string(offset[6]) + "\n%%EOF\n";
+  pdf +=
+      "6 0 obj\n<< /Type /XRef\n   /Length " + std::to_string(xref.size()) +
+      "\n   /Filter /FlateDecode\n   /Size 7\n   /W [1 2 2]\n   /Root 1 0 R\n   /Info 5 0 R\n>>\nstream\n" +
+      xref + "\nendstream\nendobj\nstartxref\n" + std::to_string(offset[6]) + "\n%%EOF\n";
   return pdf;
 }
 
 }  // namespace
 
 TEST_CASE("a plain creation date (cairo 1.16) becomes SOURCE_DATE_EPOCH's, keeping its length") {
-  const std::string pdf = "%PDF-1.5\n1 0 obj\n<< /Producer (cairo 1.16.0) /CreationDate (D:20261127081022Z) >>\nendobj\n";
+  const std::string pdf =
+      "%PDF-1.5\n1 0 obj\n<< /Producer (cairo 1.16.0) /CreationDate (D:20261127081022Z) >>\nendobj\n";
   const auto pinned = kit::with_pdf_creation_date(pdf, 86400);
   REQUIRE(pinned);
   CHECK(creation_date(*pinned) == "19700102000000Z");

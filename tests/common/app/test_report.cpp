@@ -19,8 +19,8 @@ TEST_CASE("say prints each field with its format and stores the same value under
   report.say("roundoff/explicit_float", "{best_dt:.2e}\n", {{"best_dt", 5.6e-5}});
   CHECK(summary["roundoff"]["explicit_float"]["best_dt"].get<double>() == 5.6e-5);
   report.say("", "top {n}\n", {{"n", 3L}});
-  report.say("", "{energy:.3g} {missing:d} {nan:.2e}\n", {{"energy", INFINITY}, {"missing", std::monostate{}},
-                                                          {"nan", std::nan("")}});
+  report.say("", "{energy:.3g} {missing:d} {nan:.2e}\n",
+             {{"energy", INFINITY}, {"missing", std::monostate{}}, {"nan", std::nan("")}});
   CHECK(text.str().find("overflow - undefined\n") != std::string::npos);  // never inf or nan
   CHECK(summary["n"].get<long>() == 3);
 }
@@ -29,7 +29,10 @@ TEST_CASE("a reported table prints the formatted cells and appends one JSON obje
   std::ostringstream text;
   nlohmann::json summary;
   kit::Report report(text, summary);
-  auto table = report.table("samples", {{"k", "k"}, {"t [s]", "t", "{:.2f}"}, {"", "hidden"}, {"ok", "match", "check"},
+  auto table = report.table("samples", {{"k", "k"},
+                                        {"t [s]", "t", "{:.2f}"},
+                                        {"", "hidden"},
+                                        {"ok", "match", "check"},
                                         {"accepted", "accepted"}});
   table.row({0L, 0.0, 7.5, true, 3L});
   table.row({1L, 0.125, 8.5, false, std::monostate{}}, false);  // JSON only
@@ -58,15 +61,17 @@ TEST_CASE("a table can store rows by name, labels printed only, alongside what t
   nlohmann::json summary;
   kit::Report report(text, summary);
   report.json("critical/rk4") = {{"kept", 1}};
-  auto table = report.table("critical", {{"scheme", ""}, {"Δt [s]", "measured", "{:.2e}"}, {"", "hidden"},
-                                         {"ok", "match", "check"}});
+  auto table = report.table(
+      "critical",
+      {{"scheme", ""}, {"Δt [s]", "measured", "{:.2e}"}, {"", "hidden"}, {"ok", "match", "check"}});
   table.row("rk4", {std::string("RK4"), 0.2828, 7L, true});
-  table.row("explicit_euler", {std::string("explicit Euler"), std::monostate{}, 8L, false}, false);  // JSON only
+  table.row("explicit_euler", {std::string("explicit Euler"), std::monostate{}, 8L, false},
+            false);  // JSON only
   table.print();
   CHECK(text.str() == "scheme    Δt [s]  ok\n--------------------\n   RK4  2.83e-01   ✓\n");
   CHECK(summary["critical"]["rk4"]["measured"].get<double>() == 0.2828);
   CHECK(summary["critical"]["rk4"]["hidden"].get<long>() == 7);
-  CHECK_FALSE(summary["critical"]["rk4"].contains(""));     // the label is not stored
+  CHECK_FALSE(summary["critical"]["rk4"].contains(""));        // the label is not stored
   CHECK(summary["critical"]["rk4"]["kept"].get<long>() == 1);  // a named row adds to its slot
   CHECK(summary["critical"]["explicit_euler"]["measured"].is_null());
   CHECK_THROWS_AS(table.row("midpoint", {1L}), std::invalid_argument);
@@ -82,28 +87,33 @@ TEST_CASE("named rows nest only when asked, and append builds an array per name"
   table.append("list", {std::string("a"), 1.0});
   table.append("list", {std::string("b"), 2.0});
   table.print();
-  CHECK(text.str() == "  scheme  order\n---------------\nmidpoint   2.00\n       a   1.00\n       b   2.00\n");
+  CHECK(text.str() ==
+        "  scheme  order\n---------------\nmidpoint   2.00\n       a   1.00\n       b   2.00\n");
   CHECK(summary["orders"]["midpoint"]["1e-03"]["scheme"] == "midpoint");
   CHECK(summary["orders"]["in m/s"]["scheme"] == "literal");  // a slash in a name is not a path
   REQUIRE(summary["orders"]["list"].size() == 2);
   CHECK(summary["orders"]["list"][1]["fitted"].get<double>() == 2.0);
 }
 
-TEST_CASE("attempt runs a part, or names the exercise it waits for and goes on; an empty table prints nothing") {
+TEST_CASE(
+    "attempt runs a part, or names the exercise it waits for and goes on; an empty table prints nothing") {
   std::ostringstream text;
   nlohmann::json summary;
   kit::Report report(text, summary);
   const auto done = report.attempt("written part", [] { return 42; });
   REQUIRE(done);
   CHECK(*done == 42);
-  const auto waiting = report.attempt("waiting part", []() -> int { throw kit::NotImplemented("ex 9.9", "x.hpp"); });
+  const auto waiting =
+      report.attempt("waiting part", []() -> int { throw kit::NotImplemented("ex 9.9", "x.hpp"); });
   CHECK_FALSE(waiting);
   CHECK(report.attempt("void part", [] {}));
-  CHECK(text.str() == "[skipped] waiting part: ex 9.9 is not implemented yet: edit x.hpp (look for TODO(ex 9.9))\n");
+  CHECK(text.str() ==
+        "[skipped] waiting part: ex 9.9 is not implemented yet: edit x.hpp (look for TODO(ex 9.9))\n");
   REQUIRE(summary["skipped"].size() == 1);
   CHECK(summary["skipped"][0]["section"] == "waiting part");
   // Another exception is not a waiting exercise: it propagates.
-  CHECK_THROWS_AS(report.attempt("broken part", []() -> int { throw std::runtime_error("bug"); }), std::runtime_error);
+  CHECK_THROWS_AS(report.attempt("broken part", []() -> int { throw std::runtime_error("bug"); }),
+                  std::runtime_error);
   text.str("");
   auto table = report.table("rows", {{"k", "k"}});
   table.print();

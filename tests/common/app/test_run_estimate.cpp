@@ -21,12 +21,13 @@ TEST_CASE("an estimate is its steps times the cost of a step; memory and time fo
   CHECK(kit::describe_bytes(999.4e6) == "999 MB");
   CHECK(kit::describe_bytes(9.96e9) == "10 GB");
   CHECK_FALSE(kit::over_limits(e));
-  CHECK(kit::over_limits({1e12, 1e-9, 0}));     // 1000 s: over 10 min
-  CHECK(kit::over_limits({1e3, 1e-9, 5e9}));    // 5 GB: over 4 GB
-  CHECK(kit::over_limits({1e3, 1e-9, NAN}));    // an unknown amount is never taken to fit
+  CHECK(kit::over_limits({1e12, 1e-9, 0}));   // 1000 s: over 10 min
+  CHECK(kit::over_limits({1e3, 1e-9, 5e9}));  // 5 GB: over 4 GB
+  CHECK(kit::over_limits({1e3, 1e-9, NAN}));  // an unknown amount is never taken to fit
 }
 
-TEST_CASE("the round-off sweep's estimate counts its runs: every count in double, those in float's budget twice more") {
+TEST_CASE("the round-off sweep's estimate counts its runs: every count in double, those in float's budget "
+          "twice more") {
   const auto doubles = kit::budget_sweep(1.0, 0.1, 1e-9, 2'000'000'000);
   const auto floats = kit::budget_sweep(1.0, 0.1, 1e-7, 100'000'000);
   double in_double = 0, in_float = 0;
@@ -39,7 +40,9 @@ TEST_CASE("the round-off sweep's estimate counts its runs: every count in double
   CHECK(e.steps == in_double + 2 * in_float);
   CHECK(e.seconds() == Approx(1e-9 * in_double + 12e-9 * in_float));
   CHECK(e.work == Approx(e.seconds() / 1e-9));  // the progress line counts explicit double steps
-  CHECK(e.steps == Approx(1'000'000'000 / (1 - std::pow(10, -0.25)) + 2 * 1e7 / (1 - std::pow(10, -0.25))).epsilon(0.01));
+  CHECK(
+      e.steps ==
+      Approx(1'000'000'000 / (1 - std::pow(10, -0.25)) + 2 * 1e7 / (1 - std::pow(10, -0.25))).epsilon(0.01));
   // At the budget (T = 10 s: the finest double run is 2e9 steps), the counts grow with it.
   const auto raised = kit::budget_sweep(10.0, 0.1, 1e-9, 2'000'000'000);
   CHECK(kit::roundoff_estimate(raised, floats, costs).steps > 2 * e.steps);
@@ -62,7 +65,8 @@ TEST_CASE("Van der Pol's estimate: the predicted steps, or the budget when fewer
   CHECK(big.seconds_per_step > 0);
 }
 
-TEST_CASE("announcing: stored always, printed when long or large, refused with the flags and the estimate when it cannot fit") {
+TEST_CASE("announcing: stored always, printed when long or large, refused with the flags and the estimate "
+          "when it cannot fit") {
   nlohmann::json summary;
   std::ostringstream text;
   kit::Report report(text, summary);
@@ -80,7 +84,8 @@ TEST_CASE("announcing: stored always, printed when long or large, refused with t
   CHECK_THAT(text.str(), ContainsSubstring("The record takes about 1e+06 steps: under a second and 1 GB."));
 
   try {
-    kit::announce_run(report, "huge", "The round-off sweep", {2.3e12, 1e-9, 1e3}, "--t-end 1 s, --dt-min 1e-12 s");
+    kit::announce_run(report, "huge", "The round-off sweep", {2.3e12, 1e-9, 1e3},
+                      "--t-end 1 s, --dt-min 1e-12 s");
     FAIL("not refused");
   } catch (const kit::UsageError& e) {
     CHECK_THAT(e.what(), ContainsSubstring("--t-end 1 s, --dt-min 1e-12 s") &&

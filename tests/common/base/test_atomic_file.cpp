@@ -35,7 +35,7 @@ TEST_CASE("a process killed by SIGTERM while a file is half-written leaves no te
   kit::test::TempDir dir("atomic-signal");
   const auto path = dir.path() / "figure.png";
   const pid_t child = ::fork();
-  if (child == 0) {  // the child starts a write, as a render in progress, then is terminated
+  if (child == 0) {                 // the child starts a write, as a render in progress, then is terminated
     std::signal(SIGTERM, SIG_DFL);  // as in a chapter binary: no test framework's handler
     const auto temporary = kit::temporary_sibling(path);
     std::ofstream(temporary) << "half a figure";
@@ -70,7 +70,8 @@ TEST_CASE("a scratch folder holds a helper's files until they are committed, and
   }
   REQUIRE(kit::test::files_under(dir.path()).size() == 1);
   CHECK(std::filesystem::exists(final_path));
-  CHECK(std::distance(std::filesystem::directory_iterator(dir.path()), std::filesystem::directory_iterator()) == 1);
+  CHECK(std::distance(std::filesystem::directory_iterator(dir.path()),
+                      std::filesystem::directory_iterator()) == 1);
 }
 
 TEST_CASE("a helper that outlives a SIGTERM to its parent finds no scratch folder to write into") {

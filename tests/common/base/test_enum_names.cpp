@@ -23,7 +23,8 @@ constexpr auto shuffled = kit::enum_names<Colour>({
     {Colour::red, "red", "Red"},
     {Colour::blue, "blue", "Blue"},
 });
-constexpr auto short_one = kit::enum_names<Colour>({{Colour::red, "red", "Red"}, {Colour::blue, "blue", "Blue"}});
+constexpr auto short_one =
+    kit::enum_names<Colour>({{Colour::red, "red", "Red"}, {Colour::blue, "blue", "Blue"}});
 
 }  // namespace
 
@@ -46,7 +47,8 @@ TEST_CASE("a table whose rows are out of the enumeration's order, or short of a 
 }
 
 TEST_CASE("the kit's tables keep the names its flags, scene files and summaries always used") {
-  CHECK(kit::integrator_names.flags() == std::vector<std::string>{"euler", "symplectic", "midpoint", "exact"});
+  CHECK(kit::integrator_names.flags() ==
+        std::vector<std::string>{"euler", "symplectic", "midpoint", "exact"});
   CHECK(std::string(kit::display_name(kit::ClothIntegrator::midpoint)) == "midpoint (RK2)");
   CHECK(kit::cloth_integrator_names.parse("symplectic-euler") == kit::ClothIntegrator::symplectic_euler);
   CHECK(std::string(kit::spring_kind_name(kit::SpringKind::bend)) == "bend");

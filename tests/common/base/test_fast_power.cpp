@@ -10,7 +10,9 @@
 
 namespace {
 // |p(p−1)(p−2)|·(w/2)³/(9√3), w = 1/256: the interpolation bound, plus a few rounding units.
-double bound(double p) { return std::abs(p * (p - 1) * (p - 2)) * std::pow(1.0 / 512, 3) / (9 * std::sqrt(3.0)) + 8e-16; }
+double bound(double p) {
+  return std::abs(p * (p - 1) * (p - 2)) * std::pow(1.0 / 512, 3) / (9 * std::sqrt(3.0)) + 8e-16;
+}
 }  // namespace
 
 TEST_CASE("FastPower matches std::pow within its stated bound over 2^±120") {

@@ -42,7 +42,8 @@ TEST_CASE("agrees accepts exactly the stated relative and absolute budget") {
   CHECK_FALSE(kit::agrees(NAN, 1.0, 1e-9, 1e-12));
 }
 
-TEST_CASE("cost_to_reach interpolates a work-precision curve on log-log axes, and says NaN when never reached") {
+TEST_CASE(
+    "cost_to_reach interpolates a work-precision curve on log-log axes, and says NaN when never reached") {
   const std::vector<double> cost{100, 1000, 10000}, error{1e-2, 1e-4, 1e-6};  // error ∝ cost^−2
   CHECK(kit::cost_to_reach(cost, error, 1e-3) == Approx(std::sqrt(1e5)).epsilon(1e-12));
   CHECK(kit::cost_to_reach(cost, error, 1e-2) == Approx(100));

@@ -40,7 +40,8 @@ TEST_CASE("fractions, other notations and numbers beyond a long are told apart")
   CHECK(kind("1e19") == Kind::too_large);
   CHECK(kind("1e999999999999") == Kind::too_large);
   CHECK(kind("010") == Kind::leading_zero);
-  for (const char* text : {"", "-", "e5", ".5", "1e", "1e+", "0x10", " 5", "5 ", "inf", "nan", "1,000", "12abc", "1..2"}) {
+  for (const char* text :
+       {"", "-", "e5", ".5", "1e", "1e+", "0x10", " 5", "5 ", "inf", "nan", "1,000", "12abc", "1..2"}) {
     INFO("'" << text << "'");
     CHECK(kind(text) == Kind::not_a_number);
   }

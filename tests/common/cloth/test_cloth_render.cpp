@@ -41,9 +41,7 @@ kit::NodeArray bent_positions(const kit::ClothGrid& grid) {
   return x;
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
+void write_text(const std::filesystem::path& path, const std::string& text) { std::ofstream(path) << text; }
 
 // A vertical 1 m sheet in the plane z = 0 facing a camera that looks along −z from z = 3:
 // u = x, v = y, so u × v = +z points at the camera (its front shows).
@@ -84,7 +82,7 @@ TEST_CASE("a bent sheet's OBJ reads back: counts, positions, unit normals agreei
   // Each face's own normal (from its winding) points the way its vertices' normals do.
   for (const auto& face : mesh.faces) {
     const kit::Vec3 &a = mesh.positions[std::size_t(face[0])], &b = mesh.positions[std::size_t(face[1])],
-                       &c = mesh.positions[std::size_t(face[2])];
+                    &c = mesh.positions[std::size_t(face[2])];
     const kit::Vec3 n = (b - a).cross(c - a).normalized();
     for (const int v : face) CHECK(n.dot(mesh.normals[std::size_t(v)]) > 0.5);
     // and the winding keeps the sheet's orientation: u × v here is −y, the bump is gentle.
@@ -99,11 +97,11 @@ TEST_CASE("read_obj refuses malformed lines and indices out of range, naming the
   write_text(path, vertices + "f 1//1 2//2 3//3\n");
   CHECK(kit::read_obj(path).faces.size() == 1);
   const std::vector<std::string> bad{
-      "f 1//1 2//2 4//4\n",   // vertex 4 does not exist
-      "f 0 1 2\n",            // OBJ indices start at 1
-      "f 1//1 2//2\n",        // not a triangle
+      "f 1//1 2//2 4//4\n",  // vertex 4 does not exist
+      "f 0 1 2\n",           // OBJ indices start at 1
+      "f 1//1 2//2\n",       // not a triangle
       "f 1//1 2//2 3//3 1//1\n",
-      "f 1//2 2//2 3//3\n",   // a normal that is not its vertex's
+      "f 1//2 2//2 3//3\n",     // a normal that is not its vertex's
       "f 1/1/1 2/2/2 3/3/3\n",  // texture coordinates are not written, so not read
       "v 1 2\n",
       "v 1 2 3 4\n",
@@ -160,8 +158,10 @@ TEST_CASE("a sheet facing the camera fills the centre with its front colour; the
   const double factor = centre[0] / kit::cloth_front_colour[0];
   CHECK(factor >= kit::cloth_ambient - 1e-6);
   CHECK(factor <= 1 + 1e-6);
-  CHECK(near_colour(centre, {kit::cloth_front_colour[0] * factor, kit::cloth_front_colour[1] * factor,
-                             kit::cloth_front_colour[2] * factor}, 1e-5));
+  CHECK(near_colour(centre,
+                    {kit::cloth_front_colour[0] * factor, kit::cloth_front_colour[1] * factor,
+                     kit::cloth_front_colour[2] * factor},
+                    1e-5));
   // The top-left pixel's ray: camera looking along −z, focal length 60/tan 20° pixels.
   const double focal = 60 / std::tan(20 * M_PI / 180), a = (0.5 - 80) / focal, b = (60 - 0.5) / focal;
   const kit::Colour sky = kit::cloth_sky(b / std::sqrt(a * a + b * b + 1));
@@ -183,7 +183,7 @@ TEST_CASE("the ground and a sphere are drawn, and the sheet hides what is behind
   behind_camera.col(2).array() += 10;
   const kit::Image sphere_only = kit::render_cloth(grid, behind_camera, scene, 160, 120);
   const float* centre = sphere_only.pixel(80, 60);
-  CHECK(std::abs(centre[0] - centre[2]) < 0.1f);  // the sphere is grey, not the sheet's red
+  CHECK(std::abs(centre[0] - centre[2]) < 0.1f);         // the sphere is grey, not the sheet's red
   CHECK(!near_colour(centre, kit::cloth_sky(0), 0.05));  // the sky behind it
   // The bottom row sees the ground, not the sky's bottom colour.
   CHECK(!near_colour(sphere_only.pixel(80, 119), kit::cloth_sky_bottom, 0.02));
@@ -224,8 +224,9 @@ TEST_CASE("the frame writer numbers frames from 0, clears stale ones and leaves 
   write_text(frames / "notes.txt", "kept");
   kit::FrameWriter writer(frames, 4, 2, 6, 3);
   CHECK(!std::filesystem::exists(frames / "frame_0007.png"));
-  for (int k = 0; k < 6; ++k) CHECK(writer.write(kit::Image(4, 2, {0.1 * k, 0.5, 1})).filename() ==
-                                    (k == 0 ? "frame_0000.png" : "frame_000" + std::to_string(k) + ".png"));
+  for (int k = 0; k < 6; ++k)
+    CHECK(writer.write(kit::Image(4, 2, {0.1 * k, 0.5, 1})).filename() ==
+          (k == 0 ? "frame_0000.png" : "frame_000" + std::to_string(k) + ".png"));
   CHECK_THROWS_AS(writer.write(kit::Image(3, 2, {0, 0, 0})), std::invalid_argument);
   CHECK(writer.frames().files.size() == 6);
   CHECK(writer.frames().sheet.size() == 3);  // frames 0, 2 and 4

@@ -149,9 +149,10 @@ stiffness = 100
 }
 
 TEST_CASE("every bad key or value names the file, the line and the key", "[cloth]") {
-  CHECK_THAT(error_of(with("colour = 3\n")), ContainsSubstring("scenes/test.toml:7:") &&
-                                                 ContainsSubstring("unknown key 'springs.structural.colour'") &&
-                                                 ContainsSubstring("allowed: stiffness, damping"));
+  CHECK_THAT(error_of(with("colour = 3\n")),
+             ContainsSubstring("scenes/test.toml:7:") &&
+                 ContainsSubstring("unknown key 'springs.structural.colour'") &&
+                 ContainsSubstring("allowed: stiffness, damping"));
   CHECK_THAT(error_of(R"(name = "t"
 wind = [1, 0, 0]
 )"),
@@ -159,39 +160,47 @@ wind = [1, 0, 0]
   CHECK_THAT(error_of(with("[springs.shear]\nstiffness = -5\n")),
              ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("springs.shear.stiffness = -5") &&
                  ContainsSubstring("(0, 1000000000]"));
-  CHECK_THAT(error_of(with("[springs.shear]\nstiffness = 2e9\n")), ContainsSubstring("scenes/test.toml:8:") &&
-                                                                       ContainsSubstring("springs.shear.stiffness") &&
-                                                                       ContainsSubstring("(0, 1000000000]"));
+  CHECK_THAT(error_of(with("[springs.shear]\nstiffness = 2e9\n")),
+             ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("springs.shear.stiffness") &&
+                 ContainsSubstring("(0, 1000000000]"));
   CHECK_THAT(error_of(with("damping = -1\n")), ContainsSubstring("scenes/test.toml:7:") &&
                                                    ContainsSubstring("springs.structural.damping = -1") &&
                                                    ContainsSubstring("[0, 1000000]"));
   CHECK_THAT(error_of(with("[springs.bend]\nstiffness = 10\nlayout = 5\n")),
-             ContainsSubstring("scenes/test.toml:9:") && ContainsSubstring("springs.bend.layout = 5") && ContainsSubstring("4") &&
-                 ContainsSubstring("8"));
+             ContainsSubstring("scenes/test.toml:9:") && ContainsSubstring("springs.bend.layout = 5") &&
+                 ContainsSubstring("4") && ContainsSubstring("8"));
   CHECK_THAT(error_of(with("layout = 4\n")),
-             ContainsSubstring("scenes/test.toml:7:") && ContainsSubstring("unknown key 'springs.structural.layout'"));
+             ContainsSubstring("scenes/test.toml:7:") &&
+                 ContainsSubstring("unknown key 'springs.structural.layout'"));
   CHECK_THAT(error_of(with("[run]\nintegrator = \"leapfrog\"\n")),
              ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("run.integrator = \"leapfrog\"") &&
                  ContainsSubstring("explicit-euler, symplectic-euler, midpoint, rk4"));
-  CHECK_THAT(error_of(with("[run]\ndt = 0\n")),
-             ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("run.dt = 0") && ContainsSubstring("(0, 1]"));
-  CHECK_THAT(error_of(with("[run]\nframes = 20001\n")),
-             ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("run.frames") && ContainsSubstring("[1, 20000]"));
-  CHECK_THAT(error_of(with("[camera]\nfov_deg = 180\n")),
-             ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("camera.fov_deg = 180") && ContainsSubstring("(0, 180)"));
+  CHECK_THAT(error_of(with("[run]\ndt = 0\n")), ContainsSubstring("scenes/test.toml:8:") &&
+                                                    ContainsSubstring("run.dt = 0") &&
+                                                    ContainsSubstring("(0, 1]"));
+  CHECK_THAT(error_of(with("[run]\nframes = 20001\n")), ContainsSubstring("scenes/test.toml:8:") &&
+                                                            ContainsSubstring("run.frames") &&
+                                                            ContainsSubstring("[1, 20000]"));
+  CHECK_THAT(error_of(with("[camera]\nfov_deg = 180\n")), ContainsSubstring("scenes/test.toml:8:") &&
+                                                              ContainsSubstring("camera.fov_deg = 180") &&
+                                                              ContainsSubstring("(0, 180)"));
   CHECK_THAT(error_of(with("[camera]\nposition = [1, 2, 3]\ntarget = [1, 2, 3]\n")),
-             ContainsSubstring("scenes/test.toml:9:") && ContainsSubstring("camera.target") && ContainsSubstring("differ"));
+             ContainsSubstring("scenes/test.toml:9:") && ContainsSubstring("camera.target") &&
+                 ContainsSubstring("differ"));
   CHECK_THAT(error_of(with("[[sphere]]\ncenter = [0, 0, 0]\nradius = 0\n")),
-             ContainsSubstring("scenes/test.toml:9:") && ContainsSubstring("sphere[0].radius = 0") && ContainsSubstring("(0, 1000000]"));
+             ContainsSubstring("scenes/test.toml:9:") && ContainsSubstring("sphere[0].radius = 0") &&
+                 ContainsSubstring("(0, 1000000]"));
   CHECK_THAT(error_of(with("[[sphere]]\nradius = 1\n")),
              ContainsSubstring("scenes/test.toml:7:") && ContainsSubstring("missing key 'sphere[0].center'"));
-  CHECK_THAT(error_of(with("[ground]\nfriction = 11\n")),
-             ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("ground.friction = 11") && ContainsSubstring("[0, 10]"));
-  CHECK_THAT(
-      error_of(with("[strain_limit]\niterations = 0\n")),
-      ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("strain_limit.iterations = 0") && ContainsSubstring("[1, 100]"));
-  CHECK_THAT(error_of(with("[forces]\ndrag = 1001\n")),
-             ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("forces.drag = 1001") && ContainsSubstring("[0, 1000]"));
+  CHECK_THAT(error_of(with("[ground]\nfriction = 11\n")), ContainsSubstring("scenes/test.toml:8:") &&
+                                                              ContainsSubstring("ground.friction = 11") &&
+                                                              ContainsSubstring("[0, 10]"));
+  CHECK_THAT(error_of(with("[strain_limit]\niterations = 0\n")),
+             ContainsSubstring("scenes/test.toml:8:") && ContainsSubstring("strain_limit.iterations = 0") &&
+                 ContainsSubstring("[1, 100]"));
+  CHECK_THAT(error_of(with("[forces]\ndrag = 1001\n")), ContainsSubstring("scenes/test.toml:8:") &&
+                                                            ContainsSubstring("forces.drag = 1001") &&
+                                                            ContainsSubstring("[0, 1000]"));
 }
 
 TEST_CASE("the grid's mistakes: node counts, size, u and v", "[cloth]") {
@@ -199,18 +208,21 @@ TEST_CASE("the grid's mistakes: node counts, size, u and v", "[cloth]") {
 [cloth]
 nodes = [1, 3]
 )"),
-             ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("cloth.nodes[0] = 1") && ContainsSubstring("[2, 4096]"));
+             ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("cloth.nodes[0] = 1") &&
+                 ContainsSubstring("[2, 4096]"));
   CHECK_THAT(error_of(R"(name = "t"
 [cloth]
 nodes = [4, 3, 2]
 )"),
-             ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("cloth.nodes") && ContainsSubstring("got 3 elements"));
+             ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("cloth.nodes") &&
+                 ContainsSubstring("got 3 elements"));
   CHECK_THAT(error_of(R"(name = "t"
 [cloth]
 nodes = [4, 3]
 size = [1.5, 0]
 )"),
-             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("cloth.size[1] = 0") && ContainsSubstring("(0, 1000]"));
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("cloth.size[1] = 0") &&
+                 ContainsSubstring("(0, 1000]"));
   CHECK_THAT(error_of(R"(name = "t"
 [cloth]
 size = [1.5, 1]
@@ -223,7 +235,8 @@ size = [1.5, 1.0]
 u = [1, 1, 0]
 v = [-2, -2, 0]
 )"),
-             ContainsSubstring("scenes/test.toml:6:") && ContainsSubstring("cloth.v = [-2, -2, 0]") && ContainsSubstring("parallel"));
+             ContainsSubstring("scenes/test.toml:6:") && ContainsSubstring("cloth.v = [-2, -2, 0]") &&
+                 ContainsSubstring("parallel"));
   // The default v = z, against a u along z.
   CHECK_THAT(error_of(R"(name = "t"
 [cloth]
@@ -231,14 +244,16 @@ nodes = [4, 3]
 size = [1.5, 1.0]
 u = [0, 0, 3]
 )"),
-             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("cloth.v") && ContainsSubstring("parallel"));
-  CHECK_THAT(error_of(R"(name = "t"
+             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("cloth.v") &&
+                 ContainsSubstring("parallel"));
+  CHECK_THAT(
+      error_of(R"(name = "t"
 [cloth]
 nodes = [4, 3]
 size = [1.5, 1.0]
 u = [0, 0, 0]
 )"),
-             ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("cloth.u") && ContainsSubstring("zero"));
+      ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("cloth.u") && ContainsSubstring("zero"));
   CHECK_THAT(error_of(R"(name = "t"
 [cloth]
 nodes = [4, 3]
@@ -252,13 +267,17 @@ TEST_CASE("pins must lie within the grid, counting from either end", "[cloth]") 
     return std::string("name = \"t\"\npins = ") + std::string(pins) + "\n" + std::string(minimal.substr(11));
   };
   CHECK_NOTHROW(kit::parse_cloth_scene(scene_with_pins("[[0, -1], [-4, -3], [3, 2]]"), "scenes/test.toml"));
-  CHECK_THAT(error_of(scene_with_pins("[[0, -1], [4, 0]]")),
-             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("pins[1][0] = 4") && ContainsSubstring("[-4, 3]"));
-  CHECK_THAT(error_of(scene_with_pins("[[0, -4]]")),
-             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("pins[0][1] = -4") && ContainsSubstring("[-3, 2]"));
-  CHECK_THAT(error_of(scene_with_pins("[[0]]")),
-             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("pins[0]") && ContainsSubstring("[i, j]"));
-  CHECK_THAT(error_of(scene_with_pins("3")), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("pins = 3"));
+  CHECK_THAT(error_of(scene_with_pins("[[0, -1], [4, 0]]")), ContainsSubstring("scenes/test.toml:2:") &&
+                                                                 ContainsSubstring("pins[1][0] = 4") &&
+                                                                 ContainsSubstring("[-4, 3]"));
+  CHECK_THAT(error_of(scene_with_pins("[[0, -4]]")), ContainsSubstring("scenes/test.toml:2:") &&
+                                                         ContainsSubstring("pins[0][1] = -4") &&
+                                                         ContainsSubstring("[-3, 2]"));
+  CHECK_THAT(error_of(scene_with_pins("[[0]]")), ContainsSubstring("scenes/test.toml:2:") &&
+                                                     ContainsSubstring("pins[0]") &&
+                                                     ContainsSubstring("[i, j]"));
+  CHECK_THAT(error_of(scene_with_pins("3")),
+             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("pins = 3"));
 }
 
 TEST_CASE("a missing file is a usage error naming it", "[cloth]") {
@@ -312,7 +331,8 @@ TEST_CASE("at_resolution keeps pins at their corners and cells near square", "[c
   // A pin at column 5 does not fit a 3-node-wide sheet.
   auto pinned = flag;
   pinned.pins.push_back({5, 0});
-  CHECK_THROWS_WITH(kit::at_resolution(pinned, 3), ContainsSubstring("pin [5, 0]") && ContainsSubstring("outside"));
+  CHECK_THROWS_WITH(kit::at_resolution(pinned, 3),
+                    ContainsSubstring("pin [5, 0]") && ContainsSubstring("outside"));
 }
 
 TEST_CASE("the flags override the scene and name themselves when wrong", "[cloth]") {
@@ -351,8 +371,9 @@ TEST_CASE("the flags override the scene and name themselves when wrong", "[cloth
   named.scene = "drape";
   CHECK(kit::load_cloth_scene_flag(named, scene_dir).name == "drape");
   named.scene = "drap";
-  CHECK_THROWS_WITH(kit::load_cloth_scene_flag(named, scene_dir),
-                    ContainsSubstring("--scene") && ContainsSubstring("drap") && ContainsSubstring("drape, fall, flag"));
+  CHECK_THROWS_WITH(kit::load_cloth_scene_flag(named, scene_dir), ContainsSubstring("--scene") &&
+                                                                      ContainsSubstring("drap") &&
+                                                                      ContainsSubstring("drape, fall, flag"));
 }
 
 TEST_CASE("the integrators' names and stages, the spring families' names", "[cloth]") {

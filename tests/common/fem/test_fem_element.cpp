@@ -10,7 +10,8 @@
 
 #include "fem_output.hpp"
 
-TEST_CASE("fem element: the rest shape's Dm⁻¹ and volume; degenerate and clockwise triangles refused", "[fem]") {
+TEST_CASE("fem element: the rest shape's Dm⁻¹ and volume; degenerate and clockwise triangles refused",
+          "[fem]") {
   const kit::RestTriangle rest = kit::rest_triangle({1, 1}, {3, 1}, {1, 5}, 0.01);
   kit::Matrix2 edges;
   edges << 2, 0, 0, 4;
@@ -22,7 +23,8 @@ TEST_CASE("fem element: the rest shape's Dm⁻¹ and volume; degenerate and cloc
   CHECK_THROWS_AS(kit::rest_triangle({0, 0}, {1, 0}, {0, 1}, NAN), std::invalid_argument);
 }
 
-TEST_CASE("fem element: the small strain reads a turn as (cos θ − 1) I; its forces and stiffness agree", "[fem]") {
+TEST_CASE("fem element: the small strain reads a turn as (cos θ − 1) I; its forces and stiffness agree",
+          "[fem]") {
   const kit::RestTriangle rest = kit::rest_triangle({0, 0}, {0.1, 0}, {0, 0.1}, 0.01);
   const kit::Lame lame{3e8, 4e8};
   for (const double theta : {0.1, 1.0, M_PI / 2, 3.0}) {
@@ -40,7 +42,8 @@ TEST_CASE("fem element: the small strain reads a turn as (cos θ − 1) I; its f
     CHECK((f.reshaped() - K * u).norm() < 1e-9 * f.norm());
     CHECK(f.rowwise().sum().norm() < 1e-9 * f.norm());
   }
-  CHECK(kit::linear_stress(kit::Matrix2::Identity(), lame).isApprox(kit::Matrix2::Identity() * (2 * 3e8 + 2 * 4e8)));
+  CHECK(kit::linear_stress(kit::Matrix2::Identity(), lame)
+            .isApprox(kit::Matrix2::Identity() * (2 * 3e8 + 2 * 4e8)));
 }
 
 TEST_CASE("richardson: a sequence converging as N^−2 gives its limit and order exactly; an oscillation none",
@@ -55,7 +58,8 @@ TEST_CASE("richardson: a sequence converging as N^−2 gives its limit and order
   CHECK_FALSE(kit::richardson(1.0, 1.0, 1.0).converges);
 }
 
-TEST_CASE("boundary loop: counter-clockwise, every boundary node once, on regular and irregular meshes", "[fem]") {
+TEST_CASE("boundary loop: counter-clockwise, every boundary node once, on regular and irregular meshes",
+          "[fem]") {
   for (const auto& mesh : {kit::regular_rectangle_mesh(2, 1, 4, 2, kit::CellDiagonal::alternating),
                            kit::irregular_rectangle_mesh(2, 1, 6, 3, 9)}) {
     const std::vector<int> loop = kit::boundary_loop(mesh);
@@ -70,7 +74,8 @@ TEST_CASE("boundary loop: counter-clockwise, every boundary node once, on regula
     }
     CHECK(twice_area / 2 == Approx(2.0).epsilon(1e-12));
     long on_boundary = 0;
-    for (const auto& node : mesh.nodes) on_boundary += node.x() == 0 || node.x() == 2 || node.y() == 0 || node.y() == 1;
+    for (const auto& node : mesh.nodes)
+      on_boundary += node.x() == 0 || node.x() == 2 || node.y() == 0 || node.y() == 1;
     CHECK(long(loop.size()) - 1 == on_boundary);
   }
 }

@@ -4,7 +4,8 @@
 
 #include <kit/fem/fem_material.hpp>
 
-TEST_CASE("fem material: plane stress's λ* is 2λμ/(λ + 2μ) of the 3-D Lamé parameters; the cantilever's closed form",
+TEST_CASE("fem material: plane stress's λ* is 2λμ/(λ + 2μ) of the 3-D Lamé parameters; the cantilever's "
+          "closed form",
           "[fem][material]") {
   for (double nu : {-0.5, 0.0, 0.25, 0.3, 0.49}) {
     const kit::Lame three = kit::lame_3d(2e5, nu), plane = kit::plane_stress_lame(2e5, nu);
@@ -22,7 +23,8 @@ TEST_CASE("fem material: plane stress's λ* is 2λμ/(λ + 2μ) of the 3-D Lamé
   const double second_moment = kit::rectangle_second_moment(0.03, 0.001);
   CHECK(second_moment == Approx(2.5e-12));
   const double q = 7850 * 9.81 * 0.03 * 0.001;  // [N/m]
-  CHECK(kit::cantilever_tip_deflection(q, 0.3, 2e11, second_moment) == Approx(q * 0.0081 / (8 * 2e11 * 2.5e-12)));
+  CHECK(kit::cantilever_tip_deflection(q, 0.3, 2e11, second_moment) ==
+        Approx(q * 0.0081 / (8 * 2e11 * 2.5e-12)));
   CHECK(kit::cantilever_tip_deflection(q, 0.3, 2e11, second_moment) == Approx(4.678e-3).epsilon(1e-3));
 }
 

@@ -20,8 +20,9 @@ void check_covers(const TriangleMesh& mesh, double width, double height) {
   for (int t = 0; t < int(mesh.triangles.size()); ++t) {
     CHECK(kit::triangle_area(mesh, t) > 0);
     area += kit::triangle_area(mesh, t);
-    for (int k = 0; k < 3; ++k) ++directed[{mesh.triangles[std::size_t(t)][std::size_t(k)],
-                                            mesh.triangles[std::size_t(t)][std::size_t((k + 1) % 3)]}];
+    for (int k = 0; k < 3; ++k)
+      ++directed[{mesh.triangles[std::size_t(t)][std::size_t(k)],
+                  mesh.triangles[std::size_t(t)][std::size_t((k + 1) % 3)]}];
   }
   CHECK(area == Approx(width * height).epsilon(1e-12));
   long edges = 0;
@@ -37,8 +38,10 @@ bool on_boundary(const Eigen::Vector2d& p, double width, double height) {
 }
 }  // namespace
 
-TEST_CASE("fem mesh: a regular rectangle mesh, each diagonal choice, covers the rectangle once", "[fem][mesh]") {
-  for (auto diagonal : {kit::CellDiagonal::rising, kit::CellDiagonal::falling, kit::CellDiagonal::alternating}) {
+TEST_CASE("fem mesh: a regular rectangle mesh, each diagonal choice, covers the rectangle once",
+          "[fem][mesh]") {
+  for (auto diagonal :
+       {kit::CellDiagonal::rising, kit::CellDiagonal::falling, kit::CellDiagonal::alternating}) {
     const TriangleMesh mesh = kit::regular_rectangle_mesh(2.0, 0.5, 8, 3, diagonal);
     CHECK(mesh.nodes.size() == 9 * 4);
     CHECK(mesh.triangles.size() == 2 * 8 * 3);
@@ -78,11 +81,14 @@ TEST_CASE("fem mesh: the irregular mesh is Delaunay, keeps the boundary nodes, a
     // The circumcentre from the perpendicular bisectors.
     const Eigen::Vector2d ab = pb - pa, ac = pc - pa;
     const double d = 2 * (ab.x() * ac.y() - ab.y() * ac.x());
-    const Eigen::Vector2d centre = pa + Eigen::Vector2d(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
-                                                        ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) / d;
+    const Eigen::Vector2d centre =
+        pa + Eigen::Vector2d(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
+                             ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) /
+                 d;
     const double radius = (centre - pa).norm();
     for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
-      if (int(n) != a && int(n) != b && int(n) != c) CHECK((mesh.nodes[n] - centre).norm() >= radius * (1 - 1e-9));
+      if (int(n) != a && int(n) != b && int(n) != c)
+        CHECK((mesh.nodes[n] - centre).norm() >= radius * (1 - 1e-9));
   }
   // The same seed gives the same mesh; another gives another.
   const TriangleMesh again = kit::irregular_rectangle_mesh(width, height, 16, 4, 20261124);

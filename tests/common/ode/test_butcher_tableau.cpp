@@ -14,7 +14,8 @@ TEST_CASE("every shipped tableau has consistent row sums and its claimed orders 
   }
 }
 
-TEST_CASE("the lecture's tableau as printed (−575/13824) breaks row 6 and drops to order 2, or 1 on autonomous problems") {
+TEST_CASE("the lecture's tableau as printed (−575/13824) breaks row 6 and drops to order 2, or 1 on "
+          "autonomous problems") {
   const auto& printed = kit::cash_karp_as_printed();
   long double row6 = 0;
   for (long double a : printed.a[5]) row6 += a;

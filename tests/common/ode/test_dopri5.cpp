@@ -28,8 +28,8 @@ double dopri5f_factor(double err, double previous, bool accepted) {
 // One step of an embedded pair straight from its tableau (the textbook formula), for the
 // general driver: stages k_i = f(t + c_i h, y + h Σ a_ij k_j); y + h Σ b_i k_i; h Σ (b_i − b̂_i) k_i.
 template <class Rhs, class State>
-kit::EmbeddedStep<State> tableau_step(const Rhs& f, const kit::ButcherTableau& tab, double t, const State& y, double h,
-                                      const State& k1) {
+kit::EmbeddedStep<State> tableau_step(const Rhs& f, const kit::ButcherTableau& tab, double t, const State& y,
+                                      double h, const State& k1) {
   std::vector<State> k{k1};
   for (int i = 1; i < tab.stages(); ++i) {
     State yi = y;
@@ -58,11 +58,17 @@ double pi_factor(const kit::PiController& c, double err) {
 }  // namespace
 
 TEST_CASE("DOPRI5 on Arenstorf reproduces Hairer's dopri5.f: evaluations, steps, rejections, errors") {
-  struct Expected { double tol; long evaluations, attempts, rejected; double error; };
-  for (const Expected& e : {Expected{1e-6, 985, 164, 23, 4.4e-2}, {1e-8, 2161, 360, 21, 7.8e-5}, {1e-10, 5047, 841, 0, 2.4e-6}}) {
+  struct Expected {
+    double tol;
+    long evaluations, attempts, rejected;
+    double error;
+  };
+  for (const Expected& e :
+       {Expected{1e-6, 985, 164, 23, 4.4e-2}, {1e-8, 2161, 360, 21, 7.8e-5}, {1e-10, 5047, 841, 0, 2.4e-6}}) {
     kit::Dopri5Options o;
     o.rtol = o.atol = e.tol, o.h0 = 1e-4;
-    const auto r = kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
+    const auto r =
+        kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
     INFO("tol = " << e.tol);
     REQUIRE(r.status == kit::RunStatus::finished);
     CHECK(r.stats.rhs_evals == e.evaluations);
@@ -77,7 +83,8 @@ TEST_CASE("DOPRI5's fast step-size law gives dopri5.f's factors to 2e-10, with i
   std::mt19937_64 rng(20261122);
   std::uniform_real_distribution<double> log10_err(-12.0, 0.0), log10_previous(-6.0, 0.0);
   for (int trial = 0; trial < 2000; ++trial) {
-    const double err = std::pow(10.0, log10_err(rng)), previous = std::pow(10.0, log10_previous(rng)), h = 0.37;
+    const double err = std::pow(10.0, log10_err(rng)), previous = std::pow(10.0, log10_previous(rng)),
+                 h = 0.37;
     kit::PiStepControl fast(kit::PiController{}, n);
     fast.remember_accepted(n * previous * previous);
     INFO("err = " << err << ", previous = " << previous);
@@ -86,7 +93,8 @@ TEST_CASE("DOPRI5's fast step-size law gives dopri5.f's factors to 2e-10, with i
     CHECK(fast.after_accepted(h, n * err * err, 1e9, false) == Approx(expected).epsilon(2e-10));
     // No growth right after a rejection; never above h_max.
     CHECK(fast.after_accepted(h, n * err * err, 1e9, true) == Approx(std::min(expected, h)).epsilon(2e-10));
-    CHECK(fast.after_accepted(h, n * err * err, 0.5 * h, false) == Approx(std::min(expected, 0.5 * h)).epsilon(2e-10));
+    CHECK(fast.after_accepted(h, n * err * err, 0.5 * h, false) ==
+          Approx(std::min(expected, 0.5 * h)).epsilon(2e-10));
   }
   const kit::PiController law;
   const kit::PiStepControl fast(law, n);
@@ -95,7 +103,8 @@ TEST_CASE("DOPRI5's fast step-size law gives dopri5.f's factors to 2e-10, with i
     CHECK_FALSE(fast.acceptable(n * err * err));
     CHECK(fast.after_rejected(1.0, n * err * err) == Approx(dopri5f_factor(err, 1.0, false)).epsilon(2e-10));
   }
-  for (double poisoned : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+  for (double poisoned :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     CHECK_FALSE(fast.acceptable(poisoned));
     CHECK(fast.after_rejected(1.0, poisoned) == law.min_factor);
   }
@@ -105,19 +114,25 @@ TEST_CASE("DOPRI5 costs 6 evaluations per attempted step (FSAL), plus 1 at the s
   kit::Dopri5Options o;
   o.h0 = 1e-3;
   long calls = 0;
-  const auto counted = [&](double t, const kit::Vec4& y) { ++calls; return kit::Arenstorf{}(t, y); };
+  const auto counted = [&](double t, const kit::Vec4& y) {
+    ++calls;
+    return kit::Arenstorf{}(t, y);
+  };
   const auto r = kit::dopri5(counted, 0.0, kit::Arenstorf::initial_state(), 2.0, o);
   CHECK(calls == r.stats.rhs_evals);
   CHECK(calls == 1 + 6 * (r.stats.steps + r.stats.rejected));
 }
 
-TEST_CASE("the general embedded driver with the Dormand–Prince tableau takes exactly the production DOPRI5's steps") {
+TEST_CASE("the general embedded driver with the Dormand–Prince tableau takes exactly the production DOPRI5's "
+          "steps") {
   for (double tol : {1e-5, 1e-8}) {
     kit::Dopri5Options o;
     o.rtol = o.atol = tol, o.h0 = 1e-4;
-    const auto production = kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
-    const auto general = kit::embedded_run(tableau_step<kit::Arenstorf, kit::Vec4>, pi_factor, kit::Arenstorf{}, kit::dormand_prince(), 0.0, kit::Arenstorf::initial_state(),
-                                           kit::Arenstorf::period, {tol, tol, 1e-4, 1'000'000});
+    const auto production =
+        kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
+    const auto general = kit::embedded_run(
+        tableau_step<kit::Arenstorf, kit::Vec4>, pi_factor, kit::Arenstorf{}, kit::dormand_prince(), 0.0,
+        kit::Arenstorf::initial_state(), kit::Arenstorf::period, {tol, tol, 1e-4, 1'000'000});
     CHECK(general.stats.rhs_evals == production.stats.rhs_evals);
     CHECK(general.stats.rejected == production.stats.rejected);
     // Same steps; stage sums rounded in another order, amplified by the orbit: far below tol.
@@ -137,30 +152,34 @@ TEST_CASE("DOPRI5 meets the requested tolerance against the closed forms of free
     o.rtol = o.atol = tol;
     const auto r = kit::dopri5(spring_rhs(spring), 0.0, u0, 3.0, o);
     INFO("tol = " << tol);
-    CHECK(std::abs(r.y[0] - kit::spring_motion(spring, u0, 3.0)[0]) < 30 * tol);  // global error: a few tolerances over ~5 periods
+    CHECK(std::abs(r.y[0] - kit::spring_motion(spring, u0, 3.0)[0]) <
+          30 * tol);  // global error: a few tolerances over ~5 periods
   }
 }
 
-TEST_CASE("DOPRI5's dense output follows the exact motion inside each step, to at least fifth order locally") {
+TEST_CASE(
+    "DOPRI5's dense output follows the exact motion inside each step, to at least fifth order locally") {
   kit::Spring spring;
   const kit::Vec2 u0(1.5, 0.0);
   const auto midpoint_error = [&](double h) {
     kit::Dopri5Options o;
     o.h0 = h, o.h_max = h, o.rtol = o.atol = 1.0;  // force steps of exactly h
     double worst = 0;
-    kit::dopri5(spring_rhs(spring), 0.0, u0, h, o,
-                [&](const kit::Dopri5Dense<2>& dense, const kit::Vec2&, double) {
-                  const double t = dense.t_old + 0.5 * dense.h;
-                  worst = std::abs(dense(t)[0] - kit::spring_motion(spring, u0, t)[0]);
-                },
-                [](double, double) {});
+    kit::dopri5(
+        spring_rhs(spring), 0.0, u0, h, o,
+        [&](const kit::Dopri5Dense<2>& dense, const kit::Vec2&, double) {
+          const double t = dense.t_old + 0.5 * dense.h;
+          worst = std::abs(dense(t)[0] - kit::spring_motion(spring, u0, t)[0]);
+        },
+        [](double, double) {});
     return worst;
   };
   CHECK(std::log2(midpoint_error(0.02) / midpoint_error(0.01)) >= 4.6);  // 6.0 on this linear problem
   CHECK(midpoint_error(0.01) < 1e-8);
 }
 
-TEST_CASE("a NaN from the right-hand side makes DOPRI5 reject and shrink the step, then stop with a clear message") {
+TEST_CASE("a NaN from the right-hand side makes DOPRI5 reject and shrink the step, then stop with a clear "
+          "message") {
   long nan_calls = 0;
   const auto poisoned = [&](double t, const kit::Vec2& y) {
     if (t > 0.5) ++nan_calls;
@@ -170,36 +189,43 @@ TEST_CASE("a NaN from the right-hand side makes DOPRI5 reject and shrink the ste
   const auto r = kit::dopri5(poisoned, 0.0, kit::Vec2(1, 0), 1.0, o);
   CHECK(r.status == kit::RunStatus::step_too_small);
   CHECK_THAT(r.message, ContainsSubstring("NaN or Inf") && ContainsSubstring("rejected"));
-  CHECK(r.stats.rejected > 10);                       // rejected and shrunk, again and again
-  CHECK(r.t <= 0.5 + 1e-12);                           // never stepped past the poison
-  CHECK(r.y.allFinite());                              // never accepted a NaN
+  CHECK(r.stats.rejected > 10);  // rejected and shrunk, again and again
+  CHECK(r.t <= 0.5 + 1e-12);     // never stepped past the poison
+  CHECK(r.y.allFinite());        // never accepted a NaN
 }
 
-TEST_CASE("an unreachable tolerance, a collapsing step and an exhausted step budget are reported, not hung on") {
+TEST_CASE(
+    "an unreachable tolerance, a collapsing step and an exhausted step budget are reported, not hung on") {
   kit::Dopri5Options o;
   o.rtol = o.atol = 1e-20;
-  const auto tight = kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
+  const auto tight =
+      kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
   CHECK(tight.status == kit::RunStatus::unreachable);
   CHECK_THAT(tight.message, ContainsSubstring("rtol = 1e-20") && ContainsSubstring("10·ε"));
   CHECK(tight.stats.rhs_evals == 0);
   // y' = y² from y(0) = 1 blows up at t = 1: the step collapses there.
   kit::Dopri5Options blow;
-  const auto singular = kit::dopri5([](double, const kit::Vec<1>& y) { return kit::Vec<1>(y[0] * y[0]); }, 0.0, kit::Vec<1>(1.0), 2.0, blow);
+  const auto singular = kit::dopri5([](double, const kit::Vec<1>& y) { return kit::Vec<1>(y[0] * y[0]); },
+                                    0.0, kit::Vec<1>(1.0), 2.0, blow);
   CHECK(singular.status == kit::RunStatus::step_too_small);
   CHECK(singular.t == Approx(1.0).margin(1e-3));
   CHECK_THAT(singular.message, ContainsSubstring("step size too small"));
   o.rtol = o.atol = 1e-8;
   o.max_steps = 50;
-  const auto short_budget = kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
+  const auto short_budget =
+      kit::dopri5(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), kit::Arenstorf::period, o);
   CHECK(short_budget.status == kit::RunStatus::too_many_steps);
   CHECK(short_budget.stats.steps + short_budget.stats.rejected == 50);
 }
 
-TEST_CASE("measured by the harness, the kit's DOPRI5 takes Hairer's counts on Arenstorf: 985, 2161 and 5047 evaluations") {
+TEST_CASE("measured by the harness, the kit's DOPRI5 takes Hairer's counts on Arenstorf: 985, 2161 and 5047 "
+          "evaluations") {
   const kit::Vec4 y0 = kit::Arenstorf::initial_state();
   const auto curve = kit::measure_work_precision<4>(
-      {kit::dopri5_method(kit::Arenstorf{}, 0.0, y0, kit::Arenstorf::period, 1e-4, {1e-6, 1e-8, 1e-10})}, y0, {1, 0.0})[0];
-  const std::vector<long> evaluations{985, 2161, 5047}, steps{164, 360, 841}, rejected{23, 21, 0};  // ANCHORS.md
+      {kit::dopri5_method(kit::Arenstorf{}, 0.0, y0, kit::Arenstorf::period, 1e-4, {1e-6, 1e-8, 1e-10})}, y0,
+      {1, 0.0})[0];
+  const std::vector<long> evaluations{985, 2161, 5047}, steps{164, 360, 841},
+      rejected{23, 21, 0};  // ANCHORS.md
   for (std::size_t i = 0; i < 3; ++i) {
     CHECK(curve.points[i].rhs_evals == evaluations[i]);
     CHECK(curve.points[i].attempts() == steps[i]);

@@ -34,11 +34,14 @@ TEST_CASE("a NaN from the right-hand side is a SolverError, never an accepted st
     return kit::Vec2(u[1], t > 0.5 ? std::numeric_limits<double>::quiet_NaN() : -1.0);
   };
   CHECK_THROWS_AS(kit::reference_solution(poisoned, 0.0, kit::Vec2(0.0, 0.0), {1.0}), kit::SolverError);
-  CHECK_THROWS_WITH(kit::reference_solution(poisoned, 0.0, kit::Vec2(0.0, 0.0), {1.0}), ContainsSubstring("NaN"));
+  CHECK_THROWS_WITH(kit::reference_solution(poisoned, 0.0, kit::Vec2(0.0, 0.0), {1.0}),
+                    ContainsSubstring("NaN"));
 }
 
 TEST_CASE("an exception thrown by the right-hand side crosses GSL unchanged") {
-  auto throwing = [](double, const kit::Vec2&) -> kit::Vec2 { throw std::out_of_range("model left its domain"); };
+  auto throwing = [](double, const kit::Vec2&) -> kit::Vec2 {
+    throw std::out_of_range("model left its domain");
+  };
   CHECK_THROWS_AS(kit::reference_solution(throwing, 0.0, kit::Vec2(0.0, 0.0), {1.0}), std::out_of_range);
 }
 
@@ -51,7 +54,8 @@ TEST_CASE("a GSL failure (step budget exhausted) is a SolverError naming the ste
                     ContainsSubstring("rk8pd") && ContainsSubstring("t = 0"));
 }
 
-TEST_CASE("Stats::steps counts the accepted steps of every sample interval; rejected steps are counted apart") {
+TEST_CASE(
+    "Stats::steps counts the accepted steps of every sample interval; rejected steps are counted apart") {
   // u' = (1, 0) is integrated exactly, so GSL's control grows h by its cap, 5, after each step:
   // 0.1 to t = 0.1, then 0.4 (cut to reach the sample at 0.5), then 0.5 (cut to reach 1.0).
   kit::GslOptions options;
@@ -66,13 +70,15 @@ TEST_CASE("Stats::steps counts the accepted steps of every sample interval; reje
   CHECK(stats.rhs_evals == 1 + 6 * 3);  // rkck: 5 stages and f at the new point, reused as the next k1
 }
 
-TEST_CASE("GSL rkck on Arenstorf at 1e-8 rejects steps, and spends 6 evaluations on each attempt, accepted or not") {
+TEST_CASE("GSL rkck on Arenstorf at 1e-8 rejects steps, and spends 6 evaluations on each attempt, accepted "
+          "or not") {
   kit::GslOptions options;
   options.stepper = kit::GslStepper::rkck;
   options.rtol = options.atol = 1e-8;
   options.h0 = 1e-4;
   kit::Stats stats;
-  kit::reference_solution(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), {kit::Arenstorf::period}, options, &stats);
+  kit::reference_solution(kit::Arenstorf{}, 0.0, kit::Arenstorf::initial_state(), {kit::Arenstorf::period},
+                          options, &stats);
   CHECK(stats.rhs_evals == 2383);  // ANCHORS.md: GSL rkck, tol 1e-8
   CHECK(stats.rejected > 0);
   CHECK(stats.rhs_evals == 1 + 6 * (stats.steps + stats.rejected));

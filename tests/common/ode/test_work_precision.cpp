@@ -19,10 +19,11 @@ kit::WorkMethod<2> fake(const char* label, std::vector<double> tolerances, int& 
 }
 }  // namespace
 
-TEST_CASE("the harness returns a curve per method, in order, with the counts each run returned and its max error") {
+TEST_CASE(
+    "the harness returns a curve per method, in order, with the counts each run returned and its max error") {
   int calls_a = 0, calls_b = 0;
-  const auto curves = kit::measure_work_precision<2>({fake("a", {1e-2, 1e-4}, calls_a), fake("b", {1e-3}, calls_b)},
-                                                     kit::Vec2(1.0, -2.0), {3, 0.0});
+  const auto curves = kit::measure_work_precision<2>(
+      {fake("a", {1e-2, 1e-4}, calls_a), fake("b", {1e-3}, calls_b)}, kit::Vec2(1.0, -2.0), {3, 0.0});
   REQUIRE(curves.size() == 2);
   CHECK(curves[0].label == "a");
   REQUIRE(curves[0].points.size() == 2);

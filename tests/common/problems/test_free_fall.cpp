@@ -4,7 +4,8 @@
 
 #include <kit/problems/free_fall.hpp>
 
-TEST_CASE("the free-fall closed forms are where Euler loops run here actually land, k/2·Δt²·|g| off the parabola") {
+TEST_CASE(
+    "the free-fall closed forms are where Euler loops run here actually land, k/2·Δt²·|g| off the parabola") {
   kit::FreeFall fall;
   fall.x0 = 3.0, fall.v0 = 4.0, fall.g = -9.81;
   const double dt = 0.05;

@@ -56,7 +56,8 @@ std::vector<double> sign_changes(const std::vector<double>& times, const std::ve
   std::vector<double> changes;
   for (std::size_t n = 1; n < values.size(); ++n)
     if ((values[n] > 0) != (values[n - 1] > 0))
-      changes.push_back(times[n - 1] + (times[n] - times[n - 1]) * values[n - 1] / (values[n - 1] - values[n]));
+      changes.push_back(times[n - 1] +
+                        (times[n] - times[n - 1]) * values[n - 1] / (values[n - 1] - values[n]));
   return changes;
 }
 
@@ -66,7 +67,8 @@ double mean_interval(const std::vector<double>& changes) {
 
 }  // namespace
 
-TEST_CASE("rigid shapes: the inertia of the box and the cylinder is the closed form, the T-handle's the integral") {
+TEST_CASE(
+    "rigid shapes: the inertia of the box and the cylinder is the closed form, the T-handle's the integral") {
   const auto box = kit::box_shape(2.0, Vec3(0.4, 0.2, 0.3));
   CHECK(box.inertia(0, 0) == Approx(2.0 / 12 * (0.04 + 0.09)));
   CHECK(box.inertia(1, 1) == Approx(2.0 / 12 * (0.16 + 0.09)));
@@ -84,14 +86,16 @@ TEST_CASE("rigid shapes: the inertia of the box and the cylinder is the closed f
   CHECK((handle.inertia - integrated).norm() < 5e-3 * handle.inertia.norm());
   CHECK((handle.inertia * handle.inverse_inertia - Mat3::Identity()).norm() < 1e-12);
   // Principal axes along the body axes, y < x < z: the bar (x) is the intermediate axis.
-  CHECK(std::abs(handle.inertia(0, 1)) + std::abs(handle.inertia(0, 2)) + std::abs(handle.inertia(1, 2)) < 1e-15);
+  CHECK(std::abs(handle.inertia(0, 1)) + std::abs(handle.inertia(0, 2)) + std::abs(handle.inertia(1, 2)) <
+        1e-15);
   CHECK(handle.inertia(1, 1) < 0.6 * handle.inertia(0, 0));
   CHECK(handle.inertia(0, 0) < 0.85 * handle.inertia(2, 2));
   CHECK_THROWS_WITH(kit::shape_named("sphere"), ContainsSubstring("sphere") && ContainsSubstring("t-handle"));
   CHECK_THROWS_WITH(kit::box_shape(-1, Vec3::Ones()), ContainsSubstring("mass"));
 }
 
-TEST_CASE("the nearest rotation of a drifted R is a rotation, and the Cayley map is one to third order of exp") {
+TEST_CASE(
+    "the nearest rotation of a drifted R is a rotation, and the Cayley map is one to third order of exp") {
   const Mat3 rotation = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   Mat3 drifted = rotation;
   drifted(0, 1) += 1e-3;
@@ -117,7 +121,7 @@ TEST_CASE("the nearest rotation of a drifted R is a rotation, and the Cayley map
 TEST_CASE("the torque-free closed form: its flip period is GSL's, and small wobbles about the largest axis") {
   const auto handle = kit::t_handle_shape(0.5);
   const Vec3 moments = handle.principal_moments();  // y, x, z of the body
-  const Vec3 omega0(10.0, 0.0, 0.1);                 // about the bar (intermediate), a little about z
+  const Vec3 omega0(10.0, 0.0, 0.1);                // about the bar (intermediate), a little about z
   const auto motion = kit::free_rotation(moments, Vec3(omega0.y(), omega0.x(), omega0.z()));
   REQUIRE(std::isfinite(motion.period()));
   CHECK(motion.modulus() > 0.999);  // near the separatrix: long stays, quick flips
@@ -139,7 +143,8 @@ TEST_CASE("the torque-free closed form: its flip period is GSL's, and small wobb
   const double spin = 5.0;
   const auto wobble = kit::free_rotation(moments, Vec3(1e-4, 1e-4, spin));
   CHECK(wobble.about_largest_axis());
-  const double linear = 2 * M_PI /
+  const double linear =
+      2 * M_PI /
       (spin * std::sqrt((moments[2] - moments[0]) * (moments[2] - moments[1]) / (moments[0] * moments[1])));
   CHECK(wobble.period() == Approx(linear).epsilon(1e-6));
   CHECK_FALSE(kit::free_rotation(moments, Vec3(1e-4, 1e-4, spin)).period() > 1.01 * linear);
@@ -228,8 +233,8 @@ TEST_CASE("a box dropped flat bounces to e² of its height and never stays below
       CHECK(rise == Approx(e * e).margin(h * 10));  // 1 cm at h = 1 ms, 1 mm at 0.1 ms
       CHECK(deepest_after > -1e-12);
       CHECK(deepest_before > -std::sqrt(2 * 9.81) * h * 1.5);  // at most a step's travel at impact speed
-      CHECK(state.x.y() == Approx(0.1).margin(1e-3));  // at rest on its face at the end
-      CHECK((state.R - Mat3::Identity()).norm() < 1e-12);  // a flat drop does not turn it
+      CHECK(state.x.y() == Approx(0.1).margin(1e-3));          // at rest on its face at the end
+      CHECK((state.R - Mat3::Identity()).norm() < 1e-12);      // a flat drop does not turn it
     }
   }
 }

@@ -31,7 +31,9 @@ kit::RigidState placed(const Vec3& x, const Mat3& R) {
   return state;
 }
 
-Mat3 turned(double angle, const Vec3& axis) { return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix(); }
+Mat3 turned(double angle, const Vec3& axis) {
+  return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+}
 
 // The 8 corners of a part in the world, x + R (c + s ⊙ sides/2), s ∈ {±1}³: computed here, not
 // by the code under test.
@@ -63,7 +65,8 @@ kit::RigidShape nothing() { return kit::RigidShape{}; }
 
 }  // namespace
 
-TEST_CASE("a turned T-handle's OBJ reads back: world corners, 12 flat outward faces a box", "[rigid][render]") {
+TEST_CASE("a turned T-handle's OBJ reads back: world corners, 12 flat outward faces a box",
+          "[rigid][render]") {
   const kit::test::TempDir dir("rigid-obj");
   const kit::RigidShape shape = kit::t_handle_shape(0.5);
   REQUIRE(shape.parts.size() == 2);
@@ -79,9 +82,10 @@ TEST_CASE("a turned T-handle's OBJ reads back: world corners, 12 flat outward fa
     std::vector<int> uses(8, 0);
     // Part p's 24 vertices are its corners, each on 3 faces.
     for (std::size_t v = 24 * p; v < 24 * (p + 1); ++v) {
-      const auto nearest = std::min_element(corners.begin(), corners.end(), [&](const Vec3& a, const Vec3& b) {
-        return (a - mesh.positions[v]).norm() < (b - mesh.positions[v]).norm();
-      });
+      const auto nearest =
+          std::min_element(corners.begin(), corners.end(), [&](const Vec3& a, const Vec3& b) {
+            return (a - mesh.positions[v]).norm() < (b - mesh.positions[v]).norm();
+          });
       CHECK((*nearest - mesh.positions[v]).norm() <= 1e-9);
       ++uses[std::size_t(nearest - corners.begin())];
     }
@@ -103,7 +107,8 @@ TEST_CASE("a turned T-handle's OBJ reads back: world corners, 12 flat outward fa
   }
 }
 
-TEST_CASE("a box on the ground shows its colour where it is, the sky and the ground elsewhere", "[rigid][render]") {
+TEST_CASE("a box on the ground shows its colour where it is, the sky and the ground elsewhere",
+          "[rigid][render]") {
   const kit::RigidShape box = kit::box_shape(1.0, {0.4, 0.2, 0.3});
   const kit::RigidState resting = placed({0, 0.1, 0}, Mat3::Identity());
   const kit::Camera camera = kit::rigid_camera(box, {resting}, true);
@@ -158,7 +163,8 @@ TEST_CASE("a turned body renders differently; the T-handle's bar and stem show t
 
   const kit::RigidShape handle = kit::t_handle_shape(0.5);
   const kit::RigidState spinning = placed({0, 1, 0}, turned(0.3, {0, 1, 0}));
-  const kit::Image t = kit::render_rigid(handle, spinning, kit::rigid_camera(handle, {spinning}, false), 120, 90);
+  const kit::Image t =
+      kit::render_rigid(handle, spinning, kit::rigid_camera(handle, {spinning}, false), 120, 90);
   long bar = 0, stem = 0;
   for (int py = 0; py < t.height; ++py)
     for (int px = 0; px < t.width; ++px) {
@@ -169,9 +175,11 @@ TEST_CASE("a turned body renders differently; the T-handle's bar and stem show t
   CHECK(stem > 100);
 }
 
-TEST_CASE("the default camera keeps a falling box and a spinning T-handle in the picture", "[rigid][render]") {
+TEST_CASE("the default camera keeps a falling box and a spinning T-handle in the picture",
+          "[rigid][render]") {
   const int width = 160, height = 120;
-  auto all_in_view = [&](const kit::RigidShape& shape, const std::vector<kit::RigidState>& frames, bool ground) {
+  auto all_in_view = [&](const kit::RigidShape& shape, const std::vector<kit::RigidState>& frames,
+                         bool ground) {
     const kit::Pinhole view(kit::rigid_camera(shape, frames, ground, double(width) / height), width, height);
     bool inside = true;
     for (const kit::RigidState& state : frames)
@@ -184,7 +192,8 @@ TEST_CASE("the default camera keeps a falling box and a spinning T-handle in the
   };
   const kit::RigidShape box = kit::box_shape(1.0, {0.4, 0.2, 0.3});
   std::vector<kit::RigidState> falling;
-  for (int k = 0; k <= 10; ++k) falling.push_back(placed({0.02 * k, 1.0 - 0.09 * k, 0}, turned(0.3 * k, {1, 0, 1})));
+  for (int k = 0; k <= 10; ++k)
+    falling.push_back(placed({0.02 * k, 1.0 - 0.09 * k, 0}, turned(0.3 * k, {1, 0, 1})));
   CHECK(all_in_view(box, falling, true));
   const kit::RigidShape handle = kit::t_handle_shape(0.5);
   std::vector<kit::RigidState> spinning;
@@ -207,7 +216,8 @@ TEST_CASE("write_rigid_output writes a frame and a mesh per state, clears stale 
   kit::write_rigid_obj(dir.path() / "drop_meshes" / "other_0001.obj", box, frames[0]);
   kit::RigidOutputOptions options;
   options.dir = dir.path(), options.width = 64, options.height = 48, options.fps = 10, options.stem = "drop";
-  const kit::RigidOutput out = kit::write_rigid_output(box, frames, kit::rigid_camera(box, frames, true), options);
+  const kit::RigidOutput out =
+      kit::write_rigid_output(box, frames, kit::rigid_camera(box, frames, true), options);
   REQUIRE(out.frames.size() == 3);
   REQUIRE(out.meshes.size() == 3);
   CHECK(out.frames[2] == dir.path() / "drop_frames" / "frame_0002.png");
@@ -231,7 +241,8 @@ TEST_CASE("write_rigid_output writes a frame and a mesh per state, clears stale 
   for (const auto& file : kit::test::files_under(dir.path()))
     CHECK(file.filename().string().find(".tmp") == std::string::npos);
   // No state: the stale files go, and nothing is written.
-  const kit::RigidOutput none = kit::write_rigid_output(box, {}, kit::rigid_camera(box, frames, true), options);
+  const kit::RigidOutput none =
+      kit::write_rigid_output(box, {}, kit::rigid_camera(box, frames, true), options);
   CHECK(none.frames.empty());
   CHECK(!none.note.empty());
   CHECK(kit::test::files_under(dir.path() / "drop_frames").empty());

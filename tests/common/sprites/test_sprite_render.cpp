@@ -9,14 +9,14 @@
 
 #include <unistd.h>
 
-#include <kit_catch.hpp>
 #include <fmt/format.h>
+#include <kit_catch.hpp>
 
 #include <kit/base/usage.hpp>
 #include <kit/render/animation.hpp>
+#include <kit/render/camera.hpp>
 #include <kit/render/contact_sheet.hpp>
 #include <kit/render/image.hpp>
-#include <kit/render/camera.hpp>
 #include <kit/sprites/blend.hpp>
 #include <kit/sprites/particles.hpp>
 #include <kit/sprites/sprite_renderer.hpp>
@@ -51,7 +51,8 @@ kit::Emitter emitter(kit::Blend blend, std::string texture) {
   return e;
 }
 
-kit::ParticleSpawn particle(float x, float y, float z, float size, kit::Rgb colour, float alpha, std::uint8_t from) {
+kit::ParticleSpawn particle(float x, float y, float z, float size, kit::Rgb colour, float alpha,
+                            std::uint8_t from) {
   kit::ParticleSpawn p;
   p.x = x, p.y = y, p.z = z, p.size = size;
   p.r = colour.r, p.g = colour.g, p.b = colour.b, p.alpha = alpha;
@@ -83,7 +84,8 @@ double total_light(const kit::Image& image, const kit::Colour& background) {
 
 }  // namespace
 
-TEST_CASE("over and additive give the exact expected pixel for dyadic colours and alphas", "[sprite-render]") {
+TEST_CASE("over and additive give the exact expected pixel for dyadic colours and alphas",
+          "[sprite-render]") {
   float over[3] = {0.5f, 0.5f, 0.5f};
   kit::blend_over(over, {1.0f, 0.5f, 0.0f}, 0.25f);  // 0.25·c + 0.75·0.5
   CHECK(over[0] == 0.625f);
@@ -209,7 +211,7 @@ TEST_CASE("the camera projects its target to the image centre and a point above 
   // One metre up at 10 m depth is focal/10 pixels: focal = (48/2)/tan(22.5°).
   const double focal = 24.0 / std::tan(22.5 * std::numbers::pi / 180);
   CHECK(target->py - above->py == Approx(focal / 10));
-  CHECK_FALSE(pinhole.project(1, 2, 20));  // behind the camera
+  CHECK_FALSE(pinhole.project(1, 2, 20));    // behind the camera
   CHECK_FALSE(pinhole.project(1, 2, 9.99));  // nearer than the near plane
   CHECK_THROWS_AS(kit::Pinhole(kit::Camera{{0, 0, 0}, {0, 0, 0}, 45}, 8, 8), kit::UsageError);
   CHECK_THROWS_AS(kit::Pinhole(kit::Camera{{0, 0, 1}, {0, 0, 0}, 180}, 8, 8), kit::UsageError);
@@ -230,7 +232,8 @@ TEST_CASE("pixels per metre is the focal length over depth, and a sprite is that
   kit::test::TempDir dir("sprite-scale");
   const auto scene = scene_with({emitter(kit::Blend::over, opaque_white_png(dir))}, {0, 0, 0});
   kit::SpriteRenderer renderer(scene, 100, 100);
-  for (const auto& [z, lit] : {std::pair{0.0f, 400}, std::pair{-10.0f, 100}}) {  // 4 m: 20 px at 10 m, 10 px at 20 m
+  for (const auto& [z, lit] :
+       {std::pair{0.0f, 400}, std::pair{-10.0f, 100}}) {  // 4 m: 20 px at 10 m, 10 px at 20 m
     kit::Image image;
     renderer.render(particles_of({particle(0, 0, z, 4, {1, 1, 1}, 1, 0)}), image);
     int count = 0;
@@ -253,16 +256,18 @@ TEST_CASE("a sprite behind the camera is culled and leaves the background", "[sp
 
 TEST_CASE("sprites partly or wholly outside the image are clipped, never written out of bounds",
           "[sprite-render]") {
-  const auto scene = scene_with({emitter(kit::Blend::over, "soft"), emitter(kit::Blend::additive, "spark")}, {0, 0, 0});
+  const auto scene =
+      scene_with({emitter(kit::Blend::over, "soft"), emitter(kit::Blend::additive, "spark")}, {0, 0, 0});
   kit::SpriteRenderer renderer(scene, 32, 24);
   kit::Image image;
-  const auto stats = renderer.render(particles_of({
-                                         particle(-4.5f, 3.5f, 0, 3, {1, 1, 1}, 1, 0),    // over the top-left corner
-                                         particle(5, -4, 0, 4, {1, 1, 1}, 1, 1),          // over the bottom-right corner
-                                         particle(0, 0, 9.9f, 50, {1, 1, 1}, 1, 1),       // just past the near plane, huge
-                                         particle(100, 0, 0, 1, {1, 1, 1}, 1, 0),         // wholly off to the right
-                                     }),
-                                     image);
+  const auto stats =
+      renderer.render(particles_of({
+                          particle(-4.5f, 3.5f, 0, 3, {1, 1, 1}, 1, 0),  // over the top-left corner
+                          particle(5, -4, 0, 4, {1, 1, 1}, 1, 1),        // over the bottom-right corner
+                          particle(0, 0, 9.9f, 50, {1, 1, 1}, 1, 1),     // just past the near plane, huge
+                          particle(100, 0, 0, 1, {1, 1, 1}, 1, 0),       // wholly off to the right
+                      }),
+                      image);
   CHECK(stats.sprites_drawn == 3);
   CHECK(stats.sprites_culled == 1);
   CHECK(stats.pixels_blended <= 3 * 32 * 24);
@@ -306,7 +311,8 @@ TEST_CASE("write_png writes a valid PNG and, when it cannot, throws naming the p
 
   const auto locked = dir.path() / "locked";
   std::filesystem::create_directory(locked);
-  std::filesystem::permissions(locked, std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+  std::filesystem::permissions(locked,
+                               std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
   const bool can_still_write = ::access(locked.c_str(), W_OK) == 0;  // root ignores permissions
   const auto missing = dir.path() / "no-such-folder" / "frame.png";
   CHECK_THROWS_WITH(kit::write_png(image, missing), ContainsSubstring("no-such-folder"));
@@ -338,7 +344,8 @@ TEST_CASE("every built-in texture exists, has alpha in [0, 1], a bright centre a
     INFO(name);
     const kit::Texture texture = kit::builtin_texture(name);
     REQUIRE(texture.width > 8);
-    REQUIRE(texture.rgba.size() == 4 * static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height));
+    REQUIRE(texture.rgba.size() ==
+            4 * static_cast<std::size_t>(texture.width) * static_cast<std::size_t>(texture.height));
     for (float value : texture.rgba) CHECK((value >= 0 && value <= 1));
     float centre[4], corner[4];
     kit::sample_bilinear(texture, 0.5f, 0.5f, centre);
@@ -355,10 +362,12 @@ TEST_CASE("every built-in texture exists, has alpha in [0, 1], a bright centre a
 TEST_CASE("an unknown texture name or unreadable PNG is a usage error naming it and the built-ins",
           "[sprite-render]") {
   CHECK_THROWS_AS(kit::builtin_texture("sparkle"), kit::UsageError);
-  CHECK_THROWS_WITH(kit::texture_for("sparkle"), ContainsSubstring("sparkle") && ContainsSubstring("soft, spark, flake, smoke"));
+  CHECK_THROWS_WITH(kit::texture_for("sparkle"),
+                    ContainsSubstring("sparkle") && ContainsSubstring("soft, spark, flake, smoke"));
   CHECK_THROWS_WITH(kit::texture_for("/no/such/texture.png"),
                     ContainsSubstring("/no/such/texture.png") && ContainsSubstring("soft"));
-  CHECK_THROWS_AS(kit::SpriteRenderer(scene_with({emitter(kit::Blend::over, "sparkle")}), 8, 8), kit::UsageError);
+  CHECK_THROWS_AS(kit::SpriteRenderer(scene_with({emitter(kit::Blend::over, "sparkle")}), 8, 8),
+                  kit::UsageError);
   CHECK(kit::texture_for("flake").width == 64);
 }
 
@@ -370,8 +379,8 @@ TEST_CASE("without ffmpeg on PATH, encode_animation writes nothing and says how 
   const char* old = std::getenv("PATH");
   const std::optional<std::string> saved = old ? std::optional<std::string>(old) : std::nullopt;
   ::setenv("PATH", empty_bin.c_str(), 1);
-  const auto result = kit::encode_animation(dir.path() / "frames" / "frame_%04d.png", 30, dir.path() / "run.mp4",
-                                            dir.path() / "run.gif");
+  const auto result = kit::encode_animation(dir.path() / "frames" / "frame_%04d.png", 30,
+                                            dir.path() / "run.mp4", dir.path() / "run.gif");
   if (saved)
     ::setenv("PATH", saved->c_str(), 1);
   else
@@ -382,7 +391,8 @@ TEST_CASE("without ffmpeg on PATH, encode_animation writes nothing and says how 
   CHECK(kit::test::files_under(dir.path()).empty());
 }
 
-TEST_CASE("with ffmpeg, encode_animation writes a non-empty MP4 and GIF and no temporaries; a failure leaves nothing",
+TEST_CASE("with ffmpeg, encode_animation writes a non-empty MP4 and GIF and no temporaries; a failure leaves "
+          "nothing",
           "[sprite-render]") {
   if (kit::find_ffmpeg().empty()) {
     WARN("ffmpeg is not on PATH: encoding not checked");
@@ -393,7 +403,9 @@ TEST_CASE("with ffmpeg, encode_animation writes a non-empty MP4 and GIF and no t
   kit::SpriteRenderer renderer(scene, 33, 25);  // odd sizes: the MP4 must pad
   kit::Image frame;
   for (int n = 0; n < 4; ++n) {
-    renderer.render(particles_of({particle(-1.0f + 0.5f * static_cast<float>(n), 0, 0, 2, {1, 0.8f, 0.3f}, 1, 0)}), frame);
+    renderer.render(
+        particles_of({particle(-1.0f + 0.5f * static_cast<float>(n), 0, 0, 2, {1, 0.8f, 0.3f}, 1, 0)}),
+        frame);
     kit::write_png(frame, dir.path() / fmt::format("frame_{:04d}.png", n));
   }
   const auto mp4 = dir.path() / "run.mp4", gif = dir.path() / "run.gif";
@@ -408,6 +420,7 @@ TEST_CASE("with ffmpeg, encode_animation writes a non-empty MP4 and GIF and no t
   const auto failed = kit::encode_animation(dir.path() / "missing_%04d.png", 12, dir.path() / "bad.mp4",
                                             dir.path() / "bad.gif");
   CHECK(failed.files.empty());
-  CHECK_THAT(failed.note, ContainsSubstring("exit status") && ContainsSubstring("bad.mp4") && ContainsSubstring("bad.gif"));
+  CHECK_THAT(failed.note, ContainsSubstring("exit status") && ContainsSubstring("bad.mp4") &&
+                              ContainsSubstring("bad.gif"));
   CHECK(kit::test::files_under(dir.path()).size() == 6);
 }

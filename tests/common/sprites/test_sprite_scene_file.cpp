@@ -10,7 +10,6 @@
 #include <kit/base/usage.hpp>
 #include <kit/sprites/sprite_scene_file.hpp>
 
-
 namespace {
 
 const std::filesystem::path scene_dir =
@@ -82,7 +81,8 @@ TEST_CASE("a scene without drag has no drag, and forces it does not name stay ab
 gravity = [0, -9.81, 0]
 [[emitter]]
 name = "e"
-)", "t.toml");
+)",
+                                             "t.toml");
   CHECK(scene.forces.drag == std::nullopt);
   CHECK(scene.forces.wind == std::nullopt);
   REQUIRE(scene.forces.gravity);
@@ -130,7 +130,8 @@ rate = 5
 speed = { mean = 3, variance = 0.5 }
 lifetime = { mean = 2 }
 axis = [0, 0, 2]
-)", "t.toml");
+)",
+                                             "t.toml");
   CHECK(scene.fps == 24.0);
   const auto& e = scene.emitters[0];
   CHECK(e.rate.mean == 5.0);
@@ -146,11 +147,13 @@ TEST_CASE("a rate's variance may exceed its mean: negative draws emit nothing", 
 [[emitter]]
 name = "e"
 rate = { mean = 0.04, variance = 0.5 }
-)", "t.toml");
+)",
+                                             "t.toml");
   CHECK(scene.emitters[0].rate.variance == 0.5);
 }
 
-TEST_CASE("a PNG texture is resolved against the scene file's folder; built-in names stay", "[sprite-scene]") {
+TEST_CASE("a PNG texture is resolved against the scene file's folder; built-in names stay",
+          "[sprite-scene]") {
   const auto scene = kit::parse_sprite_scene(R"(name = "t"
 [[emitter]]
 name = "a"
@@ -158,14 +161,17 @@ texture = "images/drop.png"
 [[emitter]]
 name = "b"
 texture = "spark"
-)", "scenes/x.toml");
+)",
+                                             "scenes/x.toml");
   CHECK(std::filesystem::path(scene.emitters[0].texture) == std::filesystem::path("scenes/images/drop.png"));
   CHECK(scene.emitters[1].texture == "spark");
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "a"
 texture = "sprak"
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].texture") && ContainsSubstring(".png"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].texture") &&
+                 ContainsSubstring(".png"));
 }
 
 TEST_CASE("an unknown key names the file, its line, the key and the allowed keys", "[sprite-scene]") {
@@ -173,18 +179,23 @@ TEST_CASE("an unknown key names the file, its line, the key and the allowed keys
 frames = 10
 
 emiter = 3
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("unknown key 'emiter'") && ContainsSubstring("allowed: name, frames"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("unknown key 'emiter'") &&
+                 ContainsSubstring("allowed: name, frames"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 speed = { mean = 1, varience = 2 }
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].speed.varience") && ContainsSubstring("mean, variance"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].speed.varience") &&
+                 ContainsSubstring("mean, variance"));
   CHECK_THAT(error_of(R"(name = "t"
 [camera]
 fov = 30
 [[emitter]]
 name = "e"
-)"), ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("camera.fov'"));
+)"),
+             ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("camera.fov'"));
 }
 
 TEST_CASE("a value of the wrong type names the file, its line, the key and both types", "[sprite-scene]") {
@@ -192,78 +203,104 @@ TEST_CASE("a value of the wrong type names the file, its line, the key and both 
 [[emitter]]
 name = "e"
 rate = { mean = "fast" }
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].rate.mean") &&
-         ContainsSubstring("expected a number, got a string"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].rate.mean") &&
+                 ContainsSubstring("expected a number, got a string"));
   CHECK_THAT(error_of(R"(name = "t"
 frames = 12.5
 [[emitter]]
 name = "e"
-)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("frames = 12.5") && ContainsSubstring("expected an integer"));
+)"),
+             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("frames = 12.5") &&
+                 ContainsSubstring("expected an integer"));
   CHECK_THAT(error_of(R"(name = "t"
 background = [0, 0]
 [[emitter]]
 name = "e"
-)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("background") && ContainsSubstring("3 numbers"));
+)"),
+             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("background") &&
+                 ContainsSubstring("3 numbers"));
   CHECK_THAT(error_of(R"(name = "t"
 [emitter]
 name = "e"
-)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("emitter") && ContainsSubstring("[[emitter]]"));
+)"),
+             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("emitter") &&
+                 ContainsSubstring("[[emitter]]"));
 }
 
-TEST_CASE("an out-of-range value names the file, its line, the key, the value and the range", "[sprite-scene]") {
+TEST_CASE("an out-of-range value names the file, its line, the key, the value and the range",
+          "[sprite-scene]") {
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 shape = "cone"
 speed = { mean = 1, variance = -1 }
-)"), ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[0].speed.variance = -1: must be a finite number >= 0"));
+)"),
+             ContainsSubstring("scenes/test.toml:5:") &&
+                 ContainsSubstring("emitter[0].speed.variance = -1: must be a finite number >= 0"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 [[emitter]]
 name = "f"
 colour = [1, 2, 0.5]
-)"), ContainsSubstring("scenes/test.toml:6:") && ContainsSubstring("emitter[1].colour[1] = 2") && ContainsSubstring("in [0, 1]"));
+)"),
+             ContainsSubstring("scenes/test.toml:6:") && ContainsSubstring("emitter[1].colour[1] = 2") &&
+                 ContainsSubstring("in [0, 1]"));
   CHECK_THAT(error_of(R"(name = "t"
 fps = nan
 [[emitter]]
 name = "e"
-)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("fps = nan") && ContainsSubstring("finite"));
+)"),
+             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("fps = nan") &&
+                 ContainsSubstring("finite"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 lifetime = { mean = 1, variance = 1 }
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].lifetime") && ContainsSubstring("(0, 1000000]"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].lifetime") &&
+                 ContainsSubstring("(0, 1000000]"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 alpha = { mean = 0.8, variance = 0.3 }
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].alpha") && ContainsSubstring("[0, 1]"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].alpha") &&
+                 ContainsSubstring("[0, 1]"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 first_frame = 10
 last_frame = 3
-)"), ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[0].last_frame = 3") && ContainsSubstring("first_frame (10)"));
+)"),
+             ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[0].last_frame = 3") &&
+                 ContainsSubstring("first_frame (10)"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 axis = [0, 0, 0]
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].axis") && ContainsSubstring("zero"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].axis") &&
+                 ContainsSubstring("zero"));
   CHECK_THAT(error_of(R"(name = "t"
 [death]
 region = { min = [0, 0, 0], max = [1, 0, 1] }
 [[emitter]]
 name = "e"
-)"), ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("death.region") && ContainsSubstring("min must be < max"));
+)"),
+             ContainsSubstring("scenes/test.toml:3:") && ContainsSubstring("death.region") &&
+                 ContainsSubstring("min must be < max"));
 }
 
 TEST_CASE("a scene has 1 to 255 emitters", "[sprite-scene]") {
-  CHECK_THAT(error_of("name = \"t\"\nemitter = []\n"),
-             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("emitter = []") && ContainsSubstring("got 0"));
+  CHECK_THAT(error_of("name = \"t\"\nemitter = []\n"), ContainsSubstring("scenes/test.toml:2:") &&
+                                                           ContainsSubstring("emitter = []") &&
+                                                           ContainsSubstring("got 0"));
   std::string many = "name = \"t\"\n";
   for (int i = 0; i < 256; ++i) many += "[[emitter]]\nname = \"e" + std::to_string(i) + "\"\n";
-  CHECK_THAT(error_of(many), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("1 to 255") && ContainsSubstring("got 256"));
+  CHECK_THAT(error_of(many), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("1 to 255") &&
+                                 ContainsSubstring("got 256"));
   many.resize(many.rfind("[[emitter]]"));
   CHECK(kit::parse_sprite_scene(many, "t.toml").emitters.size() == 255);
 }
@@ -273,13 +310,17 @@ TEST_CASE("a disc or sphere emitter without a positive radius is refused", "[spr
 [[emitter]]
 name = "e"
 shape = "disc"
-)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("emitter[0].radius") && ContainsSubstring("disc"));
+)"),
+             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("emitter[0].radius") &&
+                 ContainsSubstring("disc"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 shape = "sphere"
 radius = 0
-)"), ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[0].radius = 0") && ContainsSubstring("sphere"));
+)"),
+             ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[0].radius = 0") &&
+                 ContainsSubstring("sphere"));
 }
 
 TEST_CASE("on_death naming no emitter, itself, or a loop is refused at its line", "[sprite-scene]") {
@@ -290,12 +331,16 @@ on_death = "bust"
 [[emitter]]
 name = "burst"
 burst_only = true
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].on_death = \"bust\"") && ContainsSubstring("shell, burst"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") &&
+                 ContainsSubstring("emitter[0].on_death = \"bust\"") && ContainsSubstring("shell, burst"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "shell"
 on_death = "shell"
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].on_death") && ContainsSubstring("itself"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].on_death") &&
+                 ContainsSubstring("itself"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 name = "a"
@@ -303,7 +348,9 @@ on_death = "b"
 [[emitter]]
 name = "b"
 on_death = "a"
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].on_death") && ContainsSubstring("a -> b -> a"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("emitter[0].on_death") &&
+                 ContainsSubstring("a -> b -> a"));
 }
 
 TEST_CASE("a burst_only emitter that no on_death names never emits and is refused", "[sprite-scene]") {
@@ -313,7 +360,9 @@ name = "shell"
 [[emitter]]
 name = "burst"
 burst_only = true
-)"), ContainsSubstring("scenes/test.toml:6:") && ContainsSubstring("emitter[1].burst_only") && ContainsSubstring("never emits"));
+)"),
+             ContainsSubstring("scenes/test.toml:6:") && ContainsSubstring("emitter[1].burst_only") &&
+                 ContainsSubstring("never emits"));
 }
 
 TEST_CASE("two emitters with one name are refused: on_death could not tell them apart", "[sprite-scene]") {
@@ -322,7 +371,9 @@ TEST_CASE("two emitters with one name are refused: on_death could not tell them 
 name = "e"
 [[emitter]]
 name = "e"
-)"), ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[1].name") && ContainsSubstring("unique"));
+)"),
+             ContainsSubstring("scenes/test.toml:5:") && ContainsSubstring("emitter[1].name") &&
+                 ContainsSubstring("unique"));
 }
 
 TEST_CASE("wind without drag is refused: it acts through drag", "[sprite-scene]") {
@@ -332,7 +383,9 @@ gravity = [0, -9.81, 0]
 wind = [1, 0, 0]
 [[emitter]]
 name = "e"
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("forces.wind") && ContainsSubstring("drag"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("forces.wind") &&
+                 ContainsSubstring("drag"));
 }
 
 TEST_CASE("a TOML syntax error names the file and its line", "[sprite-scene]") {
@@ -340,25 +393,31 @@ TEST_CASE("a TOML syntax error names the file and its line", "[sprite-scene]") {
 [[emitter]]
 name = "e"
 rate = { mean = 3,
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("TOML syntax error"));
+)"),
+             ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("TOML syntax error"));
 }
 
 TEST_CASE("a missing required key is reported at the line of its table", "[sprite-scene]") {
   CHECK_THAT(error_of(R"(frames = 3
 [[emitter]]
 name = "e"
-)"), ContainsSubstring("scenes/test.toml:1:") && ContainsSubstring("missing key 'name'"));
+)"),
+             ContainsSubstring("scenes/test.toml:1:") && ContainsSubstring("missing key 'name'"));
   CHECK_THAT(error_of(R"(name = "t"
 [[emitter]]
 rate = 3
-)"), ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("missing key 'emitter[0].name'"));
+)"),
+             ContainsSubstring("scenes/test.toml:2:") && ContainsSubstring("missing key 'emitter[0].name'"));
   CHECK_THAT(error_of(R"(name = "t"
-)"), ContainsSubstring("scenes/test.toml:1:") && ContainsSubstring("missing key 'emitter'"));
-  CHECK_THAT(error_of(R"(name = "t"
+)"),
+             ContainsSubstring("scenes/test.toml:1:") && ContainsSubstring("missing key 'emitter'"));
+  CHECK_THAT(
+      error_of(R"(name = "t"
 [[emitter]]
 name = "e"
 size = { variance = 1 }
-)"), ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("missing key 'emitter[0].size.mean'"));
+)"),
+      ContainsSubstring("scenes/test.toml:4:") && ContainsSubstring("missing key 'emitter[0].size.mean'"));
 }
 
 TEST_CASE("a scene file that cannot be read is a UsageError naming it", "[sprite-scene]") {

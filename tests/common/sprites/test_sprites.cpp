@@ -60,8 +60,7 @@ TEST_CASE("particles per frame follow mean + rand·variance, fractions included"
   }
 }
 
-TEST_CASE("directions are uniform over the cap: inside the cone, E[cos θ] = (1 + cos θmax)/2",
-          "[sprites]") {
+TEST_CASE("directions are uniform over the cap: inside the cone, E[cos θ] = (1 + cos θmax)/2", "[sprites]") {
   kit::Random random(11);
   const int n = 100000;
   const kit::Vec3 axis{0, 0.6, 0.8};
@@ -90,11 +89,13 @@ TEST_CASE("points are uniform over the disc's area and the ball's volume", "[spr
   for (int k = 0; k < n; ++k) {
     const kit::Vec3 p = kit::offset_in_disc({0, 1, 0}, 2.0, random);
     off_plane = std::max(off_plane, std::abs(p[1]));  // in the plane normal to the axis
-    disc_inner += std::hypot(p[0], p[2]) < 1.0;  // the inner half radius holds 1/4 of the area
+    disc_inner += std::hypot(p[0], p[2]) < 1.0;       // the inner half radius holds 1/4 of the area
     const kit::BallPoint b = kit::point_in_ball(2.0, random);
     ball_inner += std::hypot(b.offset[0], b.offset[1], b.offset[2]) < 1.0;  // 1/8 of the volume
   }
-  const auto near = [&](int count, double p) { return std::abs(count - n * p) < 5 * std::sqrt(n * p * (1 - p)); };
+  const auto near = [&](int count, double p) {
+    return std::abs(count - n * p) < 5 * std::sqrt(n * p * (1 - p));
+  };
   CHECK(off_plane < 1e-12);
   CHECK(near(disc_inner, 0.25));
   CHECK(near(ball_inner, 0.125));
@@ -106,7 +107,7 @@ TEST_CASE("the closed form of gravity plus drag solves the ODE and is free fall 
   for (const double t : {0.1, 1.0, 5.0}) {
     const auto a = kit::drag_motion(s, g, k, w, t - h), b = kit::drag_motion(s, g, k, w, t + h);
     const auto c = kit::drag_motion(s, g, k, w, t);
-    CHECK((b.x - a.x) / (2 * h) == Approx(c.v).epsilon(1e-7));               // dx/dt = v
+    CHECK((b.x - a.x) / (2 * h) == Approx(c.v).epsilon(1e-7));                // dx/dt = v
     CHECK((b.v - a.v) / (2 * h) == Approx(g - k * (c.v - w)).epsilon(1e-6));  // dv/dt = g − k (v − w)
   }
   // Two half steps make one step (the flow is a semigroup), and k → 0 is free fall.
@@ -131,9 +132,9 @@ TEST_CASE("each integrator's affine step is that scheme's step, written out", "[
     };
     const double half = v + h / 2 * a(v), kicked = v + h * a(v);
     const std::pair<double, double> expected[] = {
-        {x + h * v, kicked},                  // explicit Euler: the old velocity moves x
-        {x + h * kicked, kicked},             // symplectic Euler: the new one does
-        {x + h * half, v + h * a(half)},      // midpoint: the half-step velocity does both
+        {x + h * v, kicked},              // explicit Euler: the old velocity moves x
+        {x + h * kicked, kicked},         // symplectic Euler: the new one does
+        {x + h * half, v + h * a(half)},  // midpoint: the half-step velocity does both
         {kit::drag_motion({x, v}, g, k, w, h).x, kit::drag_motion({x, v}, g, k, w, h).v}};
     for (kit::Integrator i : kit::all_integrators) {
       const auto [x1, v1] = apply(i);
@@ -187,4 +188,3 @@ TEST_CASE("the motion computes only the forces and rates a scene lists", "[sprit
   scene.forces.drag = 0.5;
   CHECK(work_of().drag == 1000);
 }
-

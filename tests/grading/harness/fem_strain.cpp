@@ -7,9 +7,9 @@
 using namespace kit;
 
 void register_entries(remote::Entries& e) {
-  e.add(
-      "deformation_gradient",
-      [](const Vec3& x0, const Vec3& x1, const Vec3& x2,
-         const Matrix2& rest_inverse) -> Matrix32 { return deformation_gradient(x0, x1, x2, rest_inverse); });
+  e.add("deformation_gradient",
+        [](const Vec3& x0, const Vec3& x1, const Vec3& x2, const Matrix2& rest_inverse) -> Matrix32 {
+          return deformation_gradient(x0, x1, x2, rest_inverse);
+        });
   e.add("green_strain", [](const Matrix32& F) -> Matrix2 { return green_strain(F); });
 }

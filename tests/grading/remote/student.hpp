@@ -5,8 +5,8 @@
 // function, and writes what it returned on descriptor 4 (or the second). It judges nothing:
 // whatever it writes is only a value for the judge to check.
 #include <map>
-#include <stdexcept>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 

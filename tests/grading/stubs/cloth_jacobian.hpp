@@ -8,7 +8,7 @@
 
 namespace kit {
 inline Mat3 spring_stiffness_block(const Vec3& xa, const Vec3& xb, double rest, double stiffness,
-                                      bool clamp) {
+                                   bool clamp) {
   return remote::call<Mat3>("spring_stiffness_block", xa, xb, rest, stiffness, clamp);
 }
 }  // namespace kit

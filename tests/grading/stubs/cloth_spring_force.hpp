@@ -7,8 +7,8 @@
 #include "remote/judge.hpp"
 
 namespace kit {
-inline Vec3 spring_force(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb,
-                            double rest, const SpringFamily& family) {
+inline Vec3 spring_force(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double rest,
+                         const SpringFamily& family) {
   return remote::call<Vec3>("spring_force", xa, xb, va, vb, rest, family);
 }
 }  // namespace kit

@@ -25,8 +25,8 @@ inline ParticleSpawn sample_particle(const Emitter& emitter, std::uint8_t index,
 namespace kit::remote {
 /// n draws of sample_particle with one generator, run in the student's program: the same
 /// particles, in the same order, as n calls (a sample of 50 000 is one message, not 50 000).
-inline std::vector<ParticleSpawn> sample_particles(const Emitter& emitter, std::uint8_t index,
-                                                   Random& random, long n) {
+inline std::vector<ParticleSpawn> sample_particles(const Emitter& emitter, std::uint8_t index, Random& random,
+                                                   long n) {
   auto state = bytes_of(random);
   auto particles = call<std::vector<ParticleSpawn>>("sample_particles", emitter, index, inout(state), n);
   restore(random, state);

@@ -129,7 +129,7 @@ class ChapterApp {
   std::ostream null_{nullptr};
   std::unique_ptr<std::streambuf> stdout_buffer_;  // stdout that first erases the progress line
   std::ostream stdout_{nullptr};
-  Report report_{null_, summary_};  // bound to text() once the flags are parsed
+  Report report_{null_, summary_};                       // bound to text() once the flags are parsed
   nlohmann::json flag_table_ = nlohmann::json::array();  // every numeric flag and its range
   bool flag_table_requested_ = false;
 };

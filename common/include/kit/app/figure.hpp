@@ -17,17 +17,17 @@ namespace kit {
 
 /// One curve or point set, stored as one data block (gnuplot `index`) of name.dat.
 struct Series {
-  std::string title;            ///< legend entry; empty means no entry. gnuplot's enhanced
-                                ///< text applies: x_0 subscript, t^2 superscript, no bare ~
-  std::vector<double> x, y;     ///< same length
-  std::string with = "lines";   ///< gnuplot style: lines, points, linespoints, impulses…
-  std::string style;            ///< extra gnuplot options, e.g. "lw 2 dt 2 lc rgb '#d62728'"
+  std::string title;           ///< legend entry; empty means no entry. gnuplot's enhanced
+                               ///< text applies: x_0 subscript, t^2 superscript, no bare ~
+  std::vector<double> x, y;    ///< same length
+  std::string with = "lines";  ///< gnuplot style: lines, points, linespoints, impulses…
+  std::string style;           ///< extra gnuplot options, e.g. "lw 2 dt 2 lc rgb '#d62728'"
 };
 
 /// One set of axes.
 struct Panel {
   std::string title;
-  std::string xlabel;           ///< quantity and unit, e.g. "time t [s]"
+  std::string xlabel;  ///< quantity and unit, e.g. "time t [s]"
   std::string ylabel;
   bool logx = false;
   bool logy = false;
@@ -73,10 +73,10 @@ struct Figure {
 };
 
 struct FigureOptions {
-  std::filesystem::path dir;                     ///< created when missing
+  std::filesystem::path dir;                       ///< created when missing
   std::vector<std::string> formats{"pdf", "png"};  ///< any of pdf, png, svg
-  bool render = true;                            ///< false: data and script only
-  bool show = false;                             ///< also open an interactive window
+  bool render = true;                              ///< false: data and script only
+  bool show = false;                               ///< also open an interactive window
 };
 
 struct FigureFiles {

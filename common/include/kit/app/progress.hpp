@@ -41,7 +41,8 @@ class ProgressBar {
   /// Draws on `out` (nullptr: draws nothing, but still counts), reading the time in seconds
   /// from `clock`.
   ProgressBar(std::ostream* out, std::function<double()> clock, Settings settings);
-  ProgressBar(std::ostream* out, std::function<double()> clock) : ProgressBar(out, std::move(clock), Settings{}) {}
+  ProgressBar(std::ostream* out, std::function<double()> clock)
+      : ProgressBar(out, std::move(clock), Settings{}) {}
   ~ProgressBar() { finish(); }
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;

@@ -9,11 +9,11 @@
 //   table.row("rk4", {...}) stores a row by name instead, summary["samples"]["rk4"] = {...},
 //   and table.append("GSL rkck", {...}) appends it to the array summary["samples"]["GSL rkck"].
 #include <initializer_list>
-#include <type_traits>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -46,11 +46,11 @@ struct Field {
 
 /// A column of a reported table.
 struct Column {
-  std::string header;          ///< printed header with unit, e.g. "Δt [s]"; empty: JSON only
-  std::string key;             ///< JSON key of the value in every row object; empty: printed only
-                               ///< (a label such as a display name, when rows are stored by name)
-  std::string format = "{}";   ///< fmt format of the printed cell: "{:.3e}", "{:.4f}"; "check" prints ✓/✗,
-                               ///< "yes/no" prints yes/no
+  std::string header;         ///< printed header with unit, e.g. "Δt [s]"; empty: JSON only
+  std::string key;            ///< JSON key of the value in every row object; empty: printed only
+                              ///< (a label such as a display name, when rows are stored by name)
+  std::string format = "{}";  ///< fmt format of the printed cell: "{:.3e}", "{:.4f}"; "check" prints ✓/✗,
+                              ///< "yes/no" prints yes/no
 };
 
 /// The text of `value` as `format` prints it (see Column::format). A string prints as it is

@@ -53,8 +53,8 @@ bool over_limits(const RunEstimate& estimate, const RunLimits& limits = {});
 /// the progress line (progress.hpp) to its steps. When it cannot fit, throws a UsageError:
 /// "{what} ({flags}) takes about …, over the limit of 10 min and 4 GB", `flags` naming the
 /// flags and their values ("--t-end 1e4 s, --dt-min 1e-12 s").
-void announce_run(Report& report, std::string_view section, std::string_view what, const RunEstimate& estimate,
-                  std::string_view flags, const RunLimits& limits = {});
+void announce_run(Report& report, std::string_view section, std::string_view what,
+                  const RunEstimate& estimate, std::string_view flags, const RunLimits& limits = {});
 
 /// Seconds per step of `run(n)`, a kernel that takes n steps, from a short calibration: the
 /// fastest of `samples` samples, each n = `steps` steps repeated until `min_seconds` have passed

@@ -9,8 +9,8 @@ namespace kit {
 class NotImplemented : public std::logic_error {
  public:
   NotImplemented(const std::string& exercise, const std::string& file)
-      : std::logic_error(exercise + " is not implemented yet: edit " + file + " (look for TODO(" +
-                         exercise + "))") {}
+      : std::logic_error(exercise + " is not implemented yet: edit " + file + " (look for TODO(" + exercise +
+                         "))") {}
 };
 
 }  // namespace kit

@@ -19,7 +19,7 @@ struct RealRange {
 };
 RealRange any_finite();
 RealRange nonzero_finite();
-RealRange positive(double hi = std::numeric_limits<double>::max());      ///< (0, hi]
-RealRange between(double lo, double hi);                                 ///< [lo, hi]
+RealRange positive(double hi = std::numeric_limits<double>::max());  ///< (0, hi]
+RealRange between(double lo, double hi);                             ///< [lo, hi]
 
 }  // namespace kit

@@ -6,9 +6,9 @@ namespace kit {
 
 namespace exit_code {
 inline constexpr int ok = 0;
-inline constexpr int failure = 1;    ///< a solver or I/O failure: a defect, never valid input
-inline constexpr int usage = 2;      ///< bad flag, value or scene
-inline constexpr int diverged = 3;   ///< only with --fail-on-divergence
+inline constexpr int failure = 1;   ///< a solver or I/O failure: a defect, never valid input
+inline constexpr int usage = 2;     ///< bad flag, value or scene
+inline constexpr int diverged = 3;  ///< only with --fail-on-divergence
 }  // namespace exit_code
 
 /// Bad input found after parsing (a combination of flags, a scene key): exit code 2.

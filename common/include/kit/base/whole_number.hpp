@@ -11,11 +11,11 @@ namespace kit {
 /// What a piece of text says as a whole number.
 struct WholeNumberText {
   enum class Kind {
-    whole,          ///< `value` holds it
-    not_a_number,   ///< not [+-]digits[.digits][(e|E)[+-]digits], exactly (no spaces, no hex)
-    not_whole,      ///< a number with a fractional part
-    too_large,      ///< whole, but beyond a long
-    leading_zero,   ///< "010": some tools read it as octal (8), others as 10; refused as ambiguous
+    whole,         ///< `value` holds it
+    not_a_number,  ///< not [+-]digits[.digits][(e|E)[+-]digits], exactly (no spaces, no hex)
+    not_whole,     ///< a number with a fractional part
+    too_large,     ///< whole, but beyond a long
+    leading_zero,  ///< "010": some tools read it as octal (8), others as 10; refused as ambiguous
   };
   Kind kind = Kind::not_a_number;
   long value = 0;

@@ -18,7 +18,8 @@ namespace kit {
 /// struct of arrays that Eigen also sees as an N×3 matrix). Row i is node i. Units follow use:
 /// positions [m], velocities [m/s], forces [N].
 using NodeArray = Eigen::Matrix<double, Eigen::Dynamic, 3>;
-using Vector3 = Vec3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
+using Vector3 =
+    Vec3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
 
 /// The three spring families of the lecture (Provot 1995).
 enum class SpringKind : std::uint8_t {
@@ -60,9 +61,9 @@ struct SpringLayout {
 struct ClothGrid {
   int nx = 2, ny = 2;
   double width = 1, height = 1;  ///< [m]
-  Vec3 origin{0, 0, 0};       ///< node (0, 0) [m]
+  Vec3 origin{0, 0, 0};          ///< node (0, 0) [m]
   Vec3 u{1, 0, 0}, v{0, 0, 1};
-  double areal_density = 0.1;    ///< [kg/m²]
+  double areal_density = 0.1;  ///< [kg/m²]
 
   long nodes() const { return long(nx) * ny; }
   long index(int i, int j) const { return long(j) * nx + i; }

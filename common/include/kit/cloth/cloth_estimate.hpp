@@ -10,6 +10,7 @@ namespace kit {
 /// four integrators and once more with the strain limit switched, in steps (progress counts one
 /// per step) and the memory of the state, springs and kept frames. `stage_ns` is a
 /// conservative cost of one spring in one force evaluation [ns].
-RunEstimate estimate_cloth_chapter(const ClothScene& scene, const ClothRunOptions& options, double stage_ns = 6.0);
+RunEstimate estimate_cloth_chapter(const ClothScene& scene, const ClothRunOptions& options,
+                                   double stage_ns = 6.0);
 
 }  // namespace kit

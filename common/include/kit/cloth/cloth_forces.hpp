@@ -15,16 +15,16 @@ namespace kit {
 
 /// What a run computed, counted (tests check these, never times).
 struct ClothWork {
-  long force_passes = 0;        ///< whole-cloth force evaluations
-  long spring_terms = 0;        ///< spring forces evaluated, all families
+  long force_passes = 0;                     ///< whole-cloth force evaluations
+  long spring_terms = 0;                     ///< spring forces evaluated, all families
   long spring_terms_by_kind[3] = {0, 0, 0};  ///< per SpringKind
-  long gravity_terms = 0;       ///< node gravity forces added
-  long drag_terms = 0;          ///< node drag forces added
-  long sphere_tests = 0;        ///< node-sphere tests
-  long ground_tests = 0;        ///< node-ground tests
-  long contacts = 0;            ///< nodes pushed out of a collider
-  long strain_passes = 0;       ///< Provot passes over the springs
-  long strain_corrections = 0;  ///< springs pulled back
+  long gravity_terms = 0;                    ///< node gravity forces added
+  long drag_terms = 0;                       ///< node drag forces added
+  long sphere_tests = 0;                     ///< node-sphere tests
+  long ground_tests = 0;                     ///< node-ground tests
+  long contacts = 0;                         ///< nodes pushed out of a collider
+  long strain_passes = 0;                    ///< Provot passes over the springs
+  long strain_corrections = 0;               ///< springs pulled back
 };
 
 /// The production force pass. Springs are regrouped once into runs that share the node offset
@@ -48,9 +48,9 @@ class ClothForces {
 
  private:
   struct Run {
-    std::int32_t first_node;   ///< a of the run's first spring
-    std::int32_t offset;       ///< d = b − a, the same along the run
-    std::int32_t first;        ///< index of the run's first spring in the arrays below
+    std::int32_t first_node;  ///< a of the run's first spring
+    std::int32_t offset;      ///< d = b − a, the same along the run
+    std::int32_t first;       ///< index of the run's first spring in the arrays below
     std::int32_t length;
   };
   std::vector<Run> runs_;

@@ -17,7 +17,8 @@
 
 namespace kit {
 
-using Matrix3 = Mat3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
+using Matrix3 =
+    Mat3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
 /// The 3n×3n matrices of the implicit step, stored by rows.
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
@@ -26,35 +27,35 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 ///   −K [x̂x̂ᵀ + (1 − L0/l)(I − x̂x̂ᵀ)],   (1 − L0/l) clamped to ≥ 0 when `clamp`.
 /// ∂f_a/∂x_b = ∂f_b/∂x_a = −∂f_a/∂x_a, ∂f_b/∂x_b = ∂f_a/∂x_a.
 using SpringStiffnessBlock = Mat3 (*)(const Vec3& xa, const Vec3& xb, double rest, double stiffness,
-                                         bool clamp);
+                                      bool clamp);
 
 /// What ex 7.2 assembles A and b from: the state at the start of the step, its forces, and the
 /// stiffness blocks ∂f_a/∂x_a of every spring (given, in spring order).
 struct ImplicitSystemInput {
   const Springs& springs;
-  const NodeArray& x;                        ///< positions [m]
-  const NodeArray& v;                        ///< velocities [m/s]
-  const NodeArray& f;                        ///< total force on each node at (x, v) [N]
-  const Eigen::VectorXd& masses;             ///< [kg]
-  const std::vector<Mat3>& stiffness;     ///< ∂f_a/∂x_a per spring [N/m]
-  std::optional<double> drag;                ///< linear air drag c [1/s]: f = −m c v, so ∂f/∂v = −m c I
-  double h = 0;                              ///< the step [s]
+  const NodeArray& x;                  ///< positions [m]
+  const NodeArray& v;                  ///< velocities [m/s]
+  const NodeArray& f;                  ///< total force on each node at (x, v) [N]
+  const Eigen::VectorXd& masses;       ///< [kg]
+  const std::vector<Mat3>& stiffness;  ///< ∂f_a/∂x_a per spring [N/m]
+  std::optional<double> drag;          ///< linear air drag c [1/s]: f = −m c v, so ∂f/∂v = −m c I
+  double h = 0;                        ///< the step [s]
 };
 /// Ex 7.2: A [kg] (3n×3n, every entry of both triangles) and b [kg·m/s] (3n).
 using ImplicitAssembly = void (*)(const ImplicitSystemInput& in, SparseMatrix& A, Eigen::VectorXd& b);
 
 /// What a conjugate-gradient solve did.
 struct PcgResult {
-  Eigen::VectorXd x;                 ///< the solution (Δv [m/s])
-  int iterations = 0;                ///< products with A
-  double residual = 0;               ///< ‖S(b − A x)‖ / ‖S b‖ at the end (0 when S b = 0)
-  bool converged = false;            ///< residual ≤ tolerance
-  bool negative_curvature = false;   ///< stopped because cᵀAc ≤ 0: A is not positive definite
+  Eigen::VectorXd x;                ///< the solution (Δv [m/s])
+  int iterations = 0;               ///< products with A
+  double residual = 0;              ///< ‖S(b − A x)‖ / ‖S b‖ at the end (0 when S b = 0)
+  bool converged = false;           ///< residual ≤ tolerance
+  bool negative_curvature = false;  ///< stopped because cᵀAc ≤ 0: A is not positive definite
 };
 /// Ex 7.3: solves S(A x − b) = 0 with x = S x, to ‖S(b − A x)‖ ≤ tolerance ‖S b‖, preconditioned
 /// by diag(A), in at most max_iterations products with A. `filters` holds one S per node.
-using FilteredPcg = PcgResult (*)(const SparseMatrix& A, const Eigen::VectorXd& b, const std::vector<Mat3>& filters,
-                                  double tolerance, int max_iterations);
+using FilteredPcg = PcgResult (*)(const SparseMatrix& A, const Eigen::VectorXd& b,
+                                  const std::vector<Mat3>& filters, double tolerance, int max_iterations);
 
 /// The student's three kernels, as the implicit step calls them.
 struct ImplicitKernels {

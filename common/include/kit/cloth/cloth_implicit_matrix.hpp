@@ -46,8 +46,8 @@ class ImplicitMatrix {
     std::int32_t aa, ab, ba, bb;
   };
   std::vector<SpringSlots> slots_;
-  std::vector<std::int32_t> diagonal_;        ///< per node: the position of its own block in its rows
-  std::vector<std::int64_t> pinned_values_;   ///< value indices in pinned rows or columns, off the diagonal
+  std::vector<std::int32_t> diagonal_;       ///< per node: the position of its own block in its rows
+  std::vector<std::int64_t> pinned_values_;  ///< value indices in pinned rows or columns, off the diagonal
   std::vector<std::int32_t> pins_;
 };
 

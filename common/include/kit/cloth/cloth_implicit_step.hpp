@@ -50,29 +50,29 @@ inline bool filtered(ImplicitSolver solver) { return solver != ImplicitSolver::c
 
 struct ImplicitSettings {
   ImplicitSolver solver = ImplicitSolver::pcg;
-  double cg_tolerance = 1e-3;   ///< relative residual of each linear solve, in (0, 1)
-  int max_cg_iterations = 2000; ///< products with A per solve
-  int iterations = 10;          ///< Newton: the most iterations; Liu: local/global iterations
-  bool clamp = true;            ///< (1 − L0/l) ≥ 0 in the stiffness blocks: A stays positive definite
+  double cg_tolerance = 1e-3;      ///< relative residual of each linear solve, in (0, 1)
+  int max_cg_iterations = 2000;    ///< products with A per solve
+  int iterations = 10;             ///< Newton: the most iterations; Liu: local/global iterations
+  bool clamp = true;               ///< (1 − L0/l) ≥ 0 in the stiffness blocks: A stays positive definite
   double newton_tolerance = 1e-6;  ///< ‖g‖ relative to ‖h f_n‖
 };
 
 /// What the implicit steps computed, counted (tests check these, never times).
 struct ImplicitWork {
   long steps = 0;
-  long solves = 0;               ///< linear solves
-  long cg_iterations = 0;        ///< products with A, all solves
-  long max_cg_iterations = 0;    ///< the most in one solve
-  long unconverged_solves = 0;   ///< stopped at the iteration cap above the tolerance
-  long newton_iterations = 0;    ///< linear solves of Newton's method (its first is the linearised step)
-  long newton_unconverged = 0;   ///< steps whose Newton iterations ran out above the tolerance
-  long local_global = 0;         ///< Liu's local/global iterations
-  long factorizations = 0;       ///< Liu's sparse Cholesky factorisations
-  long multigrid_setups = 0;     ///< multigrid hierarchies built for a matrix (--solver mg)
-  long blocks = 0;               ///< spring stiffness blocks evaluated (ex 7.1)
-  long assemblies = 0;           ///< matrices scattered
-  long filtered_nodes = 0;       ///< node-steps held on a collider inside the solve
-  double worst_residual = 0;     ///< the largest final relative residual of a solve
+  long solves = 0;              ///< linear solves
+  long cg_iterations = 0;       ///< products with A, all solves
+  long max_cg_iterations = 0;   ///< the most in one solve
+  long unconverged_solves = 0;  ///< stopped at the iteration cap above the tolerance
+  long newton_iterations = 0;   ///< linear solves of Newton's method (its first is the linearised step)
+  long newton_unconverged = 0;  ///< steps whose Newton iterations ran out above the tolerance
+  long local_global = 0;        ///< Liu's local/global iterations
+  long factorizations = 0;      ///< Liu's sparse Cholesky factorisations
+  long multigrid_setups = 0;    ///< multigrid hierarchies built for a matrix (--solver mg)
+  long blocks = 0;              ///< spring stiffness blocks evaluated (ex 7.1)
+  long assemblies = 0;          ///< matrices scattered
+  long filtered_nodes = 0;      ///< node-steps held on a collider inside the solve
+  double worst_residual = 0;    ///< the largest final relative residual of a solve
   ImplicitWork& operator+=(const ImplicitWork& other);
 };
 
@@ -135,6 +135,7 @@ class BackwardEulerStepper : public ImplicitStepper {
 
 /// The stepper a method needs for this cloth (Liu's: cloth_liu.hpp).
 std::unique_ptr<ImplicitStepper> make_implicit_stepper(const ClothSystem& cloth, ImplicitMethod method,
-                                                       const ImplicitSettings& settings, ImplicitKernels kernels);
+                                                       const ImplicitSettings& settings,
+                                                       ImplicitKernels kernels);
 
 }  // namespace kit

@@ -15,10 +15,10 @@ namespace kit {
 
 struct ClothRunOptions {
   ClothIntegrator integrator = ClothIntegrator::symplectic_euler;
-  double dt = 1e-4;        ///< [s]
-  double t_end = 1;        ///< [s]
-  int frames = 0;          ///< positions kept at t = k·t_end/frames, k = 0 … frames (0: none)
-  int samples = 400;       ///< energy and strain samples over [0, t_end]
+  double dt = 1e-4;          ///< [s]
+  double t_end = 1;          ///< [s]
+  int frames = 0;            ///< positions kept at t = k·t_end/frames, k = 0 … frames (0: none)
+  int samples = 400;         ///< energy and strain samples over [0, t_end]
   bool strain_limit = true;  ///< false: the scene's strain limit is switched off for this run
   /// Chapter 7: set, the run steps with this implicit method instead of `integrator`.
   std::optional<ImplicitMethod> implicit;
@@ -38,12 +38,12 @@ struct ClothRecording {
   std::vector<ClothSample> samples;
   std::vector<NodeArray> frames;  ///< positions at the frame times, while the cloth holds
   long steps = 0;
-  double exploded_at = -1;        ///< [s]: when the cloth blew up or a solve failed (< 0: never)
-  std::string failure;            ///< why an implicit step could not go on (empty: it could)
-  double peak_strain = 0;         ///< largest structural stretch measured (every 8 steps)
-  double deepest = 0;             ///< deepest a node ever sat inside a collider after a step [m]
+  double exploded_at = -1;  ///< [s]: when the cloth blew up or a solve failed (< 0: never)
+  std::string failure;      ///< why an implicit step could not go on (empty: it could)
+  double peak_strain = 0;   ///< largest structural stretch measured (every 8 steps)
+  double deepest = 0;       ///< deepest a node ever sat inside a collider after a step [m]
   ClothWork work;
-  ImplicitWork implicit;          ///< what the implicit steps computed (chapter 7)
+  ImplicitWork implicit;  ///< what the implicit steps computed (chapter 7)
 };
 
 /// A cloth has exploded once a coordinate is not finite or a structural spring is stretched

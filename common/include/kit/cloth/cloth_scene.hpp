@@ -21,8 +21,8 @@ struct Pin {
 /// A fixed, frictional sphere the cloth cannot enter.
 struct SphereCollider {
   Vec3 center{0, 0, 0};  ///< [m]
-  double radius = 1;        ///< [m], > 0
-  double friction = 0;      ///< Coulomb coefficient μ ≥ 0 (tangential Δv ≤ μ × normal Δv)
+  double radius = 1;     ///< [m], > 0
+  double friction = 0;   ///< Coulomb coefficient μ ≥ 0 (tangential Δv ≤ μ × normal Δv)
 };
 
 /// The ground: the half-space y < height is solid.
@@ -50,7 +50,9 @@ inline constexpr auto cloth_integrator_names = enum_names<ClothIntegrator>({
 static_assert(cloth_integrator_names.in_order());
 inline constexpr auto all_cloth_integrators = cloth_integrator_names.all();
 inline const char* flag_name(ClothIntegrator integrator) { return cloth_integrator_names.flag(integrator); }
-inline const char* display_name(ClothIntegrator integrator) { return cloth_integrator_names.display(integrator); }
+inline const char* display_name(ClothIntegrator integrator) {
+  return cloth_integrator_names.display(integrator);
+}
 int stages(ClothIntegrator integrator);  ///< force evaluations per step
 
 struct ClothScene {
@@ -59,7 +61,7 @@ struct ClothScene {
   ClothGrid grid;
   SpringLayout springs;
   std::optional<Vec3> gravity;  ///< [m/s²]; absent: no gravity force is computed
-  std::optional<double> drag;      ///< linear air drag [1/s]: f = −m·drag·v; absent: none
+  std::optional<double> drag;   ///< linear air drag [1/s]: f = −m·drag·v; absent: none
   std::vector<Pin> pins;
   std::vector<SphereCollider> spheres;
   std::optional<GroundCollider> ground;
@@ -67,9 +69,9 @@ struct ClothScene {
   Camera camera{{0, 1, 3}, {0, 0.5, 0}, 40};  ///< where the rendered frames look from
   // How the scene runs by default (flags override).
   ClothIntegrator integrator = ClothIntegrator::symplectic_euler;
-  double dt = 1e-4;   ///< [s]
-  double t_end = 2;   ///< [s]
-  int frames = 60;    ///< frames written over [0, t_end]
+  double dt = 1e-4;  ///< [s]
+  double t_end = 2;  ///< [s]
+  int frames = 60;   ///< frames written over [0, t_end]
 };
 
 /// The scene at another resolution: nx = n nodes across, ny chosen so that cells stay as close

@@ -17,11 +17,12 @@ namespace kit {
 /// nodes held (their rows and columns removed). Power iteration in the M inner product, from a
 /// fixed pseudo-random start, until the Rayleigh quotient changes by less than `tolerance`.
 struct OmegaMax {
-  double omega = 0;   ///< [rad/s]
+  double omega = 0;  ///< [rad/s]
   int iterations = 0;
 };
 OmegaMax omega_max(const Springs& springs, const Eigen::VectorXd& masses, const NodeArray& x,
-                   const std::vector<std::int32_t>& pins, double tolerance = 1e-9, int max_iterations = 20000);
+                   const std::vector<std::int32_t>& pins, double tolerance = 1e-9,
+                   int max_iterations = 20000);
 
 /// The largest Δt [s] for which every mode of the linearised cloth with frequencies in
 /// (0, ω_max] and damping along the springs in proportion to stiffness (μ = c·k for every
@@ -54,13 +55,14 @@ ClothScene springs_only(const ClothScene& scene);
 
 /// Δt_max of one integrator on the scene's sheet at n nodes along its longer side
 /// (at_longest_side), its springs damped with
-/// μ = damping_time·K (undamped at 0): the prediction from ω_max at rest and the measurement, with the spring-force evaluations one simulated second costs at
-/// 0.9 Δt_max (the explicit cost, ∝ N³ for a fixed sheet).
+/// μ = damping_time·K (undamped at 0): the prediction from ω_max at rest and the measurement, with the
+/// spring-force evaluations one simulated second costs at 0.9 Δt_max (the explicit cost, ∝ N³ for a fixed
+/// sheet).
 struct StabilityAtResolution {
   int n = 0;
   long springs = 0;
-  double omega_max = 0;   ///< [rad/s]
-  double predicted = 0;   ///< [s]
+  double omega_max = 0;  ///< [rad/s]
+  double predicted = 0;  ///< [s]
   MeasuredDtMax measured;
   double spring_evaluations_per_second = 0;  ///< per simulated second at 0.9 × measured Δt_max
 };
@@ -79,6 +81,7 @@ struct StabilityCase {
   double damping_time = 0;  ///< [s]
   StabilityAtResolution result;
 };
-std::vector<StabilityCase> stability_cases(const ClothScene& scene, int n, ClothKernels kernels, double damping_time);
+std::vector<StabilityCase> stability_cases(const ClothScene& scene, int n, ClothKernels kernels,
+                                           double damping_time);
 
 }  // namespace kit

@@ -14,8 +14,8 @@ namespace kit {
 
 /// Ex 6.3's step for the kit's force pass, and ex 6.4's sphere response.
 using SymplecticClothStep = void (*)(NodeArray& x, NodeArray& v, const Eigen::VectorXd& masses,
-                                     const std::vector<std::int32_t>& pins, const ClothForces& forces, NodeArray& f,
-                                     double dt);
+                                     const std::vector<std::int32_t>& pins, const ClothForces& forces,
+                                     NodeArray& f, double dt);
 using SphereResponse = long (*)(NodeArray& x, NodeArray& v, const SphereCollider& sphere);
 using SpringBuilder = Springs (*)(const ClothGrid& grid, const SpringLayout& layout);
 struct ClothKernels {
@@ -71,7 +71,7 @@ class ClothSystem {
   ClothKernels kernels_;
   std::vector<std::int32_t> pins_;
   Eigen::VectorXd inverse_mass_;  ///< 0 for pinned nodes: they never accelerate
-  NodeArray pinned_x_;  ///< the pins' positions, kept across the student's sphere response
+  NodeArray pinned_x_;            ///< the pins' positions, kept across the student's sphere response
   NodeArray f_, k1x_, k1v_, k2x_, k2v_, k3x_, k3v_, k4x_, k4v_, mid_x_, mid_v_;  ///< scratch
 };
 

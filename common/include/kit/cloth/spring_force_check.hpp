@@ -6,15 +6,15 @@
 
 namespace kit {
 
-using SpringForce = Vec3 (*)(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb,
-                                double rest, const SpringFamily& family);
+using SpringForce = Vec3 (*)(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double rest,
+                             const SpringFamily& family);
 
 struct SpringForceCheck {
-  int springs = 0;                ///< random springs tried
-  double third_law = 0;           ///< max |F_a(a, b) + F_b(b, a)| / |F_a| (0: equal and opposite)
-  double energy_gradient = 0;     ///< max |F_a + ∇_a E| / |F_a|, ∇ by central differences (undamped)
-  double rigid_damping = 0;       ///< max |F_a(moving together) − F_a(at rest)| / (μ |v|) (0: not slowed)
-  double stretch_damping = 0;     ///< max relative error of the damping of a pure stretch rate, μ·rate
+  int springs = 0;             ///< random springs tried
+  double third_law = 0;        ///< max |F_a(a, b) + F_b(b, a)| / |F_a| (0: equal and opposite)
+  double energy_gradient = 0;  ///< max |F_a + ∇_a E| / |F_a|, ∇ by central differences (undamped)
+  double rigid_damping = 0;    ///< max |F_a(moving together) − F_a(at rest)| / (μ |v|) (0: not slowed)
+  double stretch_damping = 0;  ///< max relative error of the damping of a pure stretch rate, μ·rate
 };
 
 /// Tries `force` on `springs` random springs (lengths 0.5–2 times their rest length, K in

@@ -81,10 +81,10 @@ class FemBody {
   /// How far each element is from its rest shape, the largest |E| (Frobenius) over elements.
   double largest_green_strain() const;
 
-  NodeArray x, v;                 ///< positions [m], velocities [m/s]
-  NodeArray loads;                ///< external forces (gravity, tractions) [N], constant
-  Eigen::VectorXd masses;         ///< lumped: each triangle gives ρ V / 3 to each corner [kg]
-  std::vector<Mat3> filters;   ///< per node, the directions it may move in
+  NodeArray x, v;             ///< positions [m], velocities [m/s]
+  NodeArray loads;            ///< external forces (gravity, tractions) [N], constant
+  Eigen::VectorXd masses;     ///< lumped: each triangle gives ρ V / 3 to each corner [kg]
+  std::vector<Mat3> filters;  ///< per node, the directions it may move in
 
  private:
   TriangleMesh mesh_;
@@ -93,10 +93,10 @@ class FemBody {
   ContinuumKernels kernels_;
   Lame lame_;
   std::vector<RestTriangle> rest_;
-  Springs springs_;  ///< the springs model's edges
+  Springs springs_;                        ///< the springs model's edges
   std::vector<Matrix9> linear_stiffness_;  ///< the linear model's, per element: the same at every state
-  SparseMatrix pattern_;        ///< the stiffness's sparsity pattern, values zero
-  std::vector<int> slots_;      ///< where each block row starts in the values: 27 an element, 12 a spring
+  SparseMatrix pattern_;                   ///< the stiffness's sparsity pattern, values zero
+  std::vector<int> slots_;  ///< where each block row starts in the values: 27 an element, 12 a spring
 };
 
 /// Gravity g [m/s²] along −y on every node's mass.

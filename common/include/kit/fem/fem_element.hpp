@@ -23,7 +23,8 @@
 
 namespace kit {
 
-using FemVector3 = Vec3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
+using FemVector3 =
+    Vec3;  ///< the name before kit/base/vec3.hpp: kept one release for exercise copies that use it
 using Matrix32 = Eigen::Matrix<double, 3, 2>;
 using Matrix2 = Eigen::Matrix2d;
 using ElementForces = Eigen::Matrix3d;  ///< column i: the force on node i [N]
@@ -71,7 +72,8 @@ Matrix2 cauchy_strain(const Matrix32& F);
 /// Hooke's law in Lamé's form, σ = λ tr(ε) I + 2μ ε [Pa], for the small strain ε.
 Matrix2 linear_stress(const Matrix2& strain, const Lame& lame);
 /// Its forces: σ = λ tr(ε) I + 2μ ε, −V [σ; 0] Dm⁻ᵀ on nodes 1 and 2, the opposite sum on node 0.
-ElementForces linear_forces(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume, const Lame& lame);
+ElementForces linear_forces(const Matrix32& F, const Matrix2& rest_inverse, double rest_volume,
+                            const Lame& lame);
 /// Its stiffness, the same at every F: ∂f/∂x of linear_forces, zero in z.
 Matrix9 linear_stiffness(const Matrix2& rest_inverse, double rest_volume, const Lame& lame);
 

@@ -21,6 +21,7 @@ struct ImplicitStep {
   int iterations = 0;
   bool converged = false;
 };
-ImplicitStep implicit_step(FemBody& body, double h, double drag, double tolerance = 1e-8, int max_iterations = 20000);
+ImplicitStep implicit_step(FemBody& body, double h, double drag, double tolerance = 1e-8,
+                           int max_iterations = 20000);
 
 }  // namespace kit

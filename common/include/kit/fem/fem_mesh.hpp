@@ -15,7 +15,7 @@
 namespace kit {
 
 struct TriangleMesh {
-  std::vector<Eigen::Vector2d> nodes;        ///< rest positions [m]
+  std::vector<Eigen::Vector2d> nodes;         ///< rest positions [m]
   std::vector<std::array<int, 3>> triangles;  ///< node indices, counter-clockwise
 };
 

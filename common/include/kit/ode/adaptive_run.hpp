@@ -34,13 +34,13 @@ std::string unreachable_tolerance(double rtol, double atol);
 
 template <class State>
 struct AdaptiveRun {
-  Trajectory<State> accepted;           ///< (t_n, y_n) at every accepted step, from t0
-  std::vector<double> step_sizes;       ///< h of each accepted step [s]
-  std::vector<double> rejected_t;       ///< where each rejected step started [s]
-  std::vector<double> rejected_h;       ///< and the step it tried [s]
-  Stats stats;                          ///< evaluations, accepted and rejected steps
+  Trajectory<State> accepted;      ///< (t_n, y_n) at every accepted step, from t0
+  std::vector<double> step_sizes;  ///< h of each accepted step [s]
+  std::vector<double> rejected_t;  ///< where each rejected step started [s]
+  std::vector<double> rejected_h;  ///< and the step it tried [s]
+  Stats stats;                     ///< evaluations, accepted and rejected steps
   RunStatus status = RunStatus::finished;
-  std::string message;                  ///< empty when finished; else what happened, where, why
+  std::string message;  ///< empty when finished; else what happened, where, why
 };
 
 }  // namespace kit

@@ -11,12 +11,12 @@ namespace kit {
 /// solution with weights b̂ (order `embedded_order`) that estimates the error h Σ (b_i − b̂_i) k_i.
 struct ButcherTableau {
   std::string name;
-  std::vector<long double> c;                    ///< nodes, size s
-  std::vector<std::vector<long double>> a;       ///< s×s, strictly lower triangular
-  std::vector<long double> b;                    ///< weights of the propagated solution
-  std::vector<long double> b_hat;                ///< weights of the embedded solution
-  int order = 0;                                 ///< claimed order of b
-  int embedded_order = 0;                        ///< claimed order of b̂
+  std::vector<long double> c;               ///< nodes, size s
+  std::vector<std::vector<long double>> a;  ///< s×s, strictly lower triangular
+  std::vector<long double> b;               ///< weights of the propagated solution
+  std::vector<long double> b_hat;           ///< weights of the embedded solution
+  int order = 0;                            ///< claimed order of b
+  int embedded_order = 0;                   ///< claimed order of b̂
   /// First same as last: the last stage is f(t + h, y_{n+1}) and serves as the next k_1, so a
   /// step costs s − 1 new evaluations.
   bool fsal = false;

@@ -54,8 +54,8 @@ ConvergenceSweep fit_sweep(std::vector<SweepPoint> points, double omega, double 
 /// Errors at horizon T for n = max(10, ⌈ω·T/2⌉) … max_steps steps, 8 counts a decade, of a
 /// scheme of order `order`: error_at(n) → |x_n − x(T)|.
 template <class ErrorAt>
-ConvergenceSweep sweep_convergence(ErrorAt&& error_at, double t, double omega, int order, int evaluations_per_step,
-                                   long max_steps = 1'000'000) {
+ConvergenceSweep sweep_convergence(ErrorAt&& error_at, double t, double omega, int order,
+                                   int evaluations_per_step, long max_steps = 1'000'000) {
   std::vector<SweepPoint> points;
   for (long n : geometric_counts(std::max(10L, static_cast<long>(std::ceil(omega * t / 2))), max_steps, 8))
     points.push_back({t / static_cast<double>(n), error_at(n), n * evaluations_per_step});
@@ -72,7 +72,7 @@ struct EvaluationsNeeded {
 /// The first measured point at or below `tolerance` or, when none is, the extrapolation of the
 /// cost fit. Past 10⁹ steps it is "never": chapter 1 measured round-off overtaking truncation
 /// there in double precision.
-EvaluationsNeeded evaluations_needed(const ConvergenceSweep& sweep, int evaluations_per_step, double tolerance,
-                                     double max_steps = 1e9);
+EvaluationsNeeded evaluations_needed(const ConvergenceSweep& sweep, int evaluations_per_step,
+                                     double tolerance, double max_steps = 1e9);
 
 }  // namespace kit

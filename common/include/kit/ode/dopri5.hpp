@@ -1,11 +1,11 @@
 #pragma once
 // The production Dormand–Prince 5(4) integrator, following the structure of Hairer's dopri5.f
 // (Hairer, Nørsett & Wanner, Solving ODEs I, II.5 and II.6): FSAL stages, the RMS error norm
-// with sk = atol + rtol·max(|y_n|, |y_{n+1}|), the PI law of Hairer's dopri5.f (pi_step_control.hpp), no growth right after
-// a rejection, HINIT for the first step, Shampine's dense output, a step budget and a minimum
-// step. Two things it does that GSL and Boost.Odeint do not: a right-hand side that returns NaN
-// or Inf makes the step rejected and shrunk, never accepted; and every failure is a status with
-// a message, never an abort.
+// with sk = atol + rtol·max(|y_n|, |y_{n+1}|), the PI law of Hairer's dopri5.f (pi_step_control.hpp), no
+// growth right after a rejection, HINIT for the first step, Shampine's dense output, a step budget and a
+// minimum step. Two things it does that GSL and Boost.Odeint do not: a right-hand side that returns NaN or
+// Inf makes the step rejected and shrunk, never accepted; and every failure is a status with a message, never
+// an abort.
 //
 // Templated on a fixed-size state: no heap allocation per step, no std::function. On a small
 // system a step is bound by latency, not flops: the next step cannot start before h_new is
@@ -68,13 +68,16 @@ inline constexpr double c2 = F::c[1].to_double(), c3 = F::c[2].to_double(), c4 =
                         c5 = F::c[4].to_double();
 inline constexpr double a21 = F::a[1][0].to_double();
 inline constexpr double a31 = F::a[2][0].to_double(), a32 = F::a[2][1].to_double();
-inline constexpr double a41 = F::a[3][0].to_double(), a42 = F::a[3][1].to_double(), a43 = F::a[3][2].to_double();
-inline constexpr double a51 = F::a[4][0].to_double(), a52 = F::a[4][1].to_double(), a53 = F::a[4][2].to_double(),
-                        a54 = F::a[4][3].to_double();
-inline constexpr double a61 = F::a[5][0].to_double(), a62 = F::a[5][1].to_double(), a63 = F::a[5][2].to_double(),
-                        a64 = F::a[5][3].to_double(), a65 = F::a[5][4].to_double();
-inline constexpr double a71 = F::a[6][0].to_double(), a73 = F::a[6][2].to_double(), a74 = F::a[6][3].to_double(),
-                        a75 = F::a[6][4].to_double(), a76 = F::a[6][5].to_double();
+inline constexpr double a41 = F::a[3][0].to_double(), a42 = F::a[3][1].to_double(),
+                        a43 = F::a[3][2].to_double();
+inline constexpr double a51 = F::a[4][0].to_double(), a52 = F::a[4][1].to_double(),
+                        a53 = F::a[4][2].to_double(), a54 = F::a[4][3].to_double();
+inline constexpr double a61 = F::a[5][0].to_double(), a62 = F::a[5][1].to_double(),
+                        a63 = F::a[5][2].to_double(), a64 = F::a[5][3].to_double(),
+                        a65 = F::a[5][4].to_double();
+inline constexpr double a71 = F::a[6][0].to_double(), a73 = F::a[6][2].to_double(),
+                        a74 = F::a[6][3].to_double(), a75 = F::a[6][4].to_double(),
+                        a76 = F::a[6][5].to_double();
 inline constexpr double e1 = F::e(0).to_double(), e3 = F::e(2).to_double(), e4 = F::e(3).to_double(),
                         e5 = F::e(4).to_double(), e6 = F::e(5).to_double(), e7 = F::e(6).to_double();
 inline constexpr double d1 = F::d[0].to_double(), d3 = F::d[2].to_double(), d4 = F::d[3].to_double(),
@@ -117,7 +120,8 @@ Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end, 
   }
   Vec<N> k1 = f(t0, y0), k2, k3, k4, k5, k6, k7, y1, ysti;
   out.stats.rhs_evals = 1;
-  double h = options.h0 > 0 ? std::min(options.h0, h_max) : dopri5_initial_step(f, t0, y0, k1, h_max, options, out.stats.rhs_evals);
+  double h = options.h0 > 0 ? std::min(options.h0, h_max)
+                            : dopri5_initial_step(f, t0, y0, k1, h_max, options, out.stats.rhs_evals);
   double& t = out.t;
   Vec<N>& y = out.y;
   Vec<N> a21_k1 = a21 * k1;
@@ -132,11 +136,13 @@ Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end, 
     // Below ten rounding units of t the step no longer moves t: the tolerance is out of reach.
     if (0.1 * std::abs(h) <= std::max(std::abs(t), std::abs(t_end - t0)) * uround) {
       out.status = RunStatus::step_too_small;
-      out.message = poisoned ? fmt::format("the right-hand side returned NaN or Inf near t = {:.6g}; the step was "
-                                           "rejected and shrunk to h = {:.3g} without recovering", t, h)
-                             : fmt::format("step size too small, h = {:.3g} at t = {:.6g}: the solution changes "
-                                           "faster than rtol = {:.3g}, atol = {:.3g} can follow (a singularity?)",
-                                           h, t, options.rtol, options.atol);
+      out.message = poisoned
+                        ? fmt::format("the right-hand side returned NaN or Inf near t = {:.6g}; the step was "
+                                      "rejected and shrunk to h = {:.3g} without recovering",
+                                      t, h)
+                        : fmt::format("step size too small, h = {:.3g} at t = {:.6g}: the solution changes "
+                                      "faster than rtol = {:.3g}, atol = {:.3g} can follow (a singularity?)",
+                                      h, t, options.rtol, options.atol);
       return out;
     }
     if ((t + 1.01 * h - t_end) > 0) {  // land exactly on t_end
@@ -206,13 +212,15 @@ Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end, 
 /// The same, without callbacks: the final state only (what the benchmarks time). No dense
 /// output is built.
 template <int N, class Rhs>
-Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end, const Dopri5Options& options) {
+Dopri5Result<N> dopri5(const Rhs& f, double t0, const Vec<N>& y0, double t_end,
+                       const Dopri5Options& options) {
   return dopri5(f, t0, y0, t_end, options, NoObserver{}, [](double, double) {});
 }
 
 /// The same, recording every accepted and rejected step (what the chapter plots).
 template <int N, class Rhs>
-AdaptiveRun<Vec<N>> dopri5_run(const Rhs& f, double t0, const Vec<N>& y0, double t_end, const Dopri5Options& options) {
+AdaptiveRun<Vec<N>> dopri5_run(const Rhs& f, double t0, const Vec<N>& y0, double t_end,
+                               const Dopri5Options& options) {
   AdaptiveRun<Vec<N>> run;
   run.accepted.push(t0, y0);
   const auto result = dopri5(

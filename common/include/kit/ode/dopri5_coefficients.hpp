@@ -12,7 +12,9 @@ namespace kit::dopri5_fraction {
 struct Fraction {
   long long p = 0, q = 1;
   constexpr double to_double() const { return double(p) / double(q); }  // one rounding
-  constexpr long double to_long_double() const { return static_cast<long double>(p) / static_cast<long double>(q); }
+  constexpr long double to_long_double() const {
+    return static_cast<long double>(p) / static_cast<long double>(q);
+  }
 };
 constexpr Fraction reduce(long long p, long long q) {
   const long long g = std::gcd(p < 0 ? -p : p, q);
@@ -34,16 +36,18 @@ inline constexpr Fraction a[7][7] = {
     {{35, 384}, {0, 1}, {500, 1113}, {125, 192}, {-2187, 6784}, {11, 84}},
 };
 // Weights of the propagated fifth-order solution: row 7 of a (FSAL), and b_7 = 0.
-inline constexpr Fraction b[7] = {{35, 384}, {0, 1}, {500, 1113}, {125, 192}, {-2187, 6784}, {11, 84}, {0, 1}};
+inline constexpr Fraction b[7] = {{35, 384},     {0, 1},   {500, 1113}, {125, 192},
+                                  {-2187, 6784}, {11, 84}, {0, 1}};
 // Weights of the embedded fourth-order solution.
-inline constexpr Fraction b_hat[7] = {{5179, 57600}, {0, 1},       {7571, 16695}, {393, 640},
+inline constexpr Fraction b_hat[7] = {{5179, 57600},    {0, 1},      {7571, 16695}, {393, 640},
                                       {-92097, 339200}, {187, 2100}, {1, 40}};
 // Error weights e_i = b_i − b̂_i (e_1 = 71/57600, …, e_7 = −1/40).
 constexpr Fraction e(int i) { return b[i] - b_hat[i]; }
 // Shampine's dense-output weights, as in dopri5.f.
-inline constexpr Fraction d[7] = {{-12715105075LL, 11282082432LL}, {0, 1}, {87487479700LL, 32700410799LL},
-                                  {-10690763975LL, 1880347072LL},  {701980252875LL, 199316789632LL},
-                                  {-1453857185LL, 822651844LL},     {69997945LL, 29380423LL}};
+inline constexpr Fraction d[7] = {{-12715105075LL, 11282082432LL},  {0, 1},
+                                  {87487479700LL, 32700410799LL},   {-10690763975LL, 1880347072LL},
+                                  {701980252875LL, 199316789632LL}, {-1453857185LL, 822651844LL},
+                                  {69997945LL, 29380423LL}};
 
 static_assert(e(0) == Fraction{71, 57600} && e(6) == Fraction{-1, 40}, "e = b - b_hat, HNW table II.5.2");
 

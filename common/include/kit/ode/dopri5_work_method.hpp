@@ -12,13 +12,15 @@ namespace kit {
 
 /// The kit's DOPRI5: accepted and rejected steps; unfinished when it stops before t1.
 template <int N, class Rhs>
-WorkMethod<N> dopri5_method(Rhs f, double t0, const Vec<N>& y0, double t1, double h0, std::vector<double> tolerances) {
+WorkMethod<N> dopri5_method(Rhs f, double t0, const Vec<N>& y0, double t1, double h0,
+                            std::vector<double> tolerances) {
   return {"DOPRI5 (kit)", look::dopri5 + " pt 7 lw 2", std::move(tolerances), [=](double tol) {
             Dopri5Options options;
             options.rtol = options.atol = tol;
             options.h0 = h0;
             const auto r = dopri5(f, t0, y0, t1, options);
-            return WorkRun<N>{r.y, r.stats.rhs_evals, r.stats.steps, r.stats.rejected, r.status == RunStatus::finished};
+            return WorkRun<N>{r.y, r.stats.rhs_evals, r.stats.steps, r.stats.rejected,
+                              r.status == RunStatus::finished};
           }};
 }
 

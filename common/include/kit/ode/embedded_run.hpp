@@ -27,8 +27,8 @@ struct EmbeddedOptions {
 };
 
 template <class Step, class Factor, class Rhs, class State>
-AdaptiveRun<State> embedded_run(Step&& step, Factor&& factor, const Rhs& f, const ButcherTableau& tableau, double t0,
-                                const State& y0, double t_end, const EmbeddedOptions& options) {
+AdaptiveRun<State> embedded_run(Step&& step, Factor&& factor, const Rhs& f, const ButcherTableau& tableau,
+                                double t0, const State& y0, double t_end, const EmbeddedOptions& options) {
   AdaptiveRun<State> run;
   run.accepted.push(t0, y0);
   if (run.message = unreachable_tolerance(options.rtol, options.atol); !run.message.empty()) {

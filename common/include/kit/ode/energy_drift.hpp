@@ -23,7 +23,8 @@ struct EnergyDrift {
 
 /// N = `steps` steps of `step` (u_k → u_{k+1}) from u0, with energy(u) in J.
 template <class State, class Step, class Energy>
-EnergyDrift energy_drift(const State& u0, double dt, long steps, Step&& step, Energy&& energy, long samples = 2000) {
+EnergyDrift energy_drift(const State& u0, double dt, long steps, Step&& step, Energy&& energy,
+                         long samples = 2000) {
   EnergyDrift out;
   const double e0 = energy(u0);
   const long every = std::max(1L, steps / samples);
@@ -38,7 +39,8 @@ EnergyDrift energy_drift(const State& u0, double dt, long steps, Step&& step, En
     }
     last_good = u;
     out.max_drift = std::max(out.max_drift, drift);
-    if (k % every == 0 || k == steps) out.t.push_back(static_cast<double>(k) * dt), out.drift.push_back(drift);
+    if (k % every == 0 || k == steps)
+      out.t.push_back(static_cast<double>(k) * dt), out.drift.push_back(drift);
     if (k == steps) break;
     if ((k + 1) % progress_chunk == 0) progress_add(static_cast<double>(progress_chunk));
     u = step(u);

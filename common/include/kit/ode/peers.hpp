@@ -18,7 +18,8 @@ using PeerResult = WorkRun<N>;
 /// GSL's driver with `stepper` at rtol = atol = tol, first step h0: accepted and rejected steps
 /// from its evolve object.
 template <int N, class Rhs>
-PeerResult<N> gsl_peer(const Rhs& f, double t0, const Vec<N>& y0, double t1, GslStepper stepper, double tol, double h0) {
+PeerResult<N> gsl_peer(const Rhs& f, double t0, const Vec<N>& y0, double t1, GslStepper stepper, double tol,
+                       double h0) {
   GslOptions options;
   options.stepper = stepper;
   options.rtol = options.atol = tol;
@@ -42,8 +43,8 @@ PeerResult<N> boost_dopri5_peer(const Rhs& f, double t0, const Vec<N>& y0, doubl
   };
   State y;
   Eigen::Map<Vec<N>>(y.data()) = y0;
-  const auto accepted = odeint::integrate_adaptive(odeint::make_controlled(tol, tol, odeint::runge_kutta_dopri5<State>()),
-                                                   system, y, t0, t1, h0);
+  const auto accepted = odeint::integrate_adaptive(
+      odeint::make_controlled(tol, tol, odeint::runge_kutta_dopri5<State>()), system, y, t0, t1, h0);
   return {Eigen::Map<const Vec<N>>(y.data()), evaluations, static_cast<long>(accepted), std::nullopt};
 }
 

@@ -27,6 +27,8 @@ inline PiController pi_controller_for_order(int embedded_order, PiController law
 }
 
 /// Remembers an accepted step's error for the next factor (floored at 1e-4, as in dopri5.f).
-inline void remember_accepted(PiController& c, double err) { c.log_previous_error = std::log(std::max(err, 1e-4)); }
+inline void remember_accepted(PiController& c, double err) {
+  c.log_previous_error = std::log(std::max(err, 1e-4));
+}
 
 }  // namespace kit

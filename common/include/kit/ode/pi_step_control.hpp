@@ -24,8 +24,11 @@ class PiStepControl {
  public:
   /// `n` is the number of components in the RMS norm.
   PiStepControl(const PiController& law, int n)
-      : law_(law), n_(double(n)), error_power_(fast_power(-0.5 * law.alpha)),
-        previous_power_(fast_power(0.5 * law.beta)), reject_scale_(law.safety * std::pow(n_, 0.5 * law.alpha)),
+      : law_(law),
+        n_(double(n)),
+        error_power_(fast_power(-0.5 * law.alpha)),
+        previous_power_(fast_power(0.5 * law.beta)),
+        reject_scale_(law.safety * std::pow(n_, 0.5 * law.alpha)),
         accept_scale_(reject_scale_ * std::exp(law.beta * law.log_previous_error)) {}
 
   /// S = Σ (e_i/sk_i)² = n·err². False for NaN, so a poisoned step is never accepted.

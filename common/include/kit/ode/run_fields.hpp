@@ -11,9 +11,13 @@
 namespace kit {
 
 template <class State>
-std::vector<Field> run_fields(const AdaptiveRun<State>& run, const std::string& evaluations_key = "rhs_evals") {
-  return {{"status", std::string(name(run.status))}, {"message", run.message},
-          {evaluations_key, run.stats.rhs_evals}, {"accepted", run.stats.steps}, {"rejected", run.stats.rejected}};
+std::vector<Field> run_fields(const AdaptiveRun<State>& run,
+                              const std::string& evaluations_key = "rhs_evals") {
+  return {{"status", std::string(name(run.status))},
+          {"message", run.message},
+          {evaluations_key, run.stats.rhs_evals},
+          {"accepted", run.stats.steps},
+          {"rejected", run.stats.rejected}};
 }
 
 template <class State>

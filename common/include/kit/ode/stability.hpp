@@ -4,9 +4,9 @@
 //    y'' + 2ζω y' + ω² y = 0, as a function of h = ωΔt and ζ;
 //  - the measured side: does a simulation's amplitude grow over a long horizon?
 //  - the critical step where the two change from stable to unstable, by bisection.
+#include <array>
 #include <cmath>
 #include <complex>
-#include <array>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -37,7 +37,6 @@ std::pair<std::complex<double>, std::complex<double>> oscillator_z(double h, dou
 /// `amplification(z)` is the scheme's R.
 double spectral_radius(const std::function<std::complex<double>(std::complex<double>)>& amplification,
                        double h, double zeta);
-
 
 /// The smallest h in [0.01, h_max] where `radius(h)` exceeds 1 (+1e-13 for round-off): the
 /// stability limit in ωΔt. Returns 0 when already unstable at h = 0.01 (read: unstable for
@@ -70,7 +69,8 @@ double critical_step(const std::function<bool(double)>& unstable, double stable_
 
 /// Points (x, y) on the grid [x0, x1] × [y0, y1] (nx × ny cells) where f(x, y) − level changes
 /// sign along a cell edge, placed by linear interpolation: a level set drawn as dots.
-std::vector<std::array<double, 2>> level_set_points(const std::function<double(double, double)>& f, double level,
-                                                    double x0, double x1, double y0, double y1, int nx, int ny);
+std::vector<std::array<double, 2>> level_set_points(const std::function<double(double, double)>& f,
+                                                    double level, double x0, double x1, double y0, double y1,
+                                                    int nx, int ny);
 
 }  // namespace kit

@@ -53,6 +53,7 @@ RunEstimate roundoff_estimate(const StepSweep& doubles, const StepSweep& floats,
 /// Announces that estimate (run_estimate.hpp) under "roundoff", naming --t-end and --dt-min, and
 /// refuses a sweep that cannot fit (the step budget keeps every sweep far within the limits).
 /// Sets roundoff_implicit_weight.
-void announce_roundoff(Report& report, const StepSweep& doubles, const StepSweep& floats, const RoundoffCosts& costs);
+void announce_roundoff(Report& report, const StepSweep& doubles, const StepSweep& floats,
+                       const RoundoffCosts& costs);
 
 }  // namespace kit

@@ -14,6 +14,7 @@ inline constexpr double recorded_step_bytes = 160;
 /// not a whole number (to 1e-9 relative, see whole_steps) or n is outside [1, max_steps]; past
 /// max_steps the message gives the estimate of the memory the run would take
 /// (`bytes_per_step` a step, run_estimate.hpp) beside that of the limit.
-long require_whole_steps(double t_end, double dt, long max_steps, double bytes_per_step = recorded_step_bytes);
+long require_whole_steps(double t_end, double dt, long max_steps,
+                         double bytes_per_step = recorded_step_bytes);
 
 }  // namespace kit

@@ -41,13 +41,13 @@ struct WorkMethod {
 
 /// One measured point of a curve.
 struct WorkPoint {
-  double tolerance = 0;           ///< as in WorkMethod::tolerances
-  double error = 0;               ///< max_i |y_i(T) − reference_i|, units of y
-  long rhs_evals = 0;             ///< evaluations of f
-  std::optional<long> accepted;   ///< accepted steps, when the method says
-  std::optional<long> rejected;   ///< rejected steps, when the method says
-  bool finished = true;           ///< false: the run stopped before T, so `error` is not an error at T
-  double seconds = 0;             ///< wall time of one run [s], the fastest of the rounds
+  double tolerance = 0;          ///< as in WorkMethod::tolerances
+  double error = 0;              ///< max_i |y_i(T) − reference_i|, units of y
+  long rhs_evals = 0;            ///< evaluations of f
+  std::optional<long> accepted;  ///< accepted steps, when the method says
+  std::optional<long> rejected;  ///< rejected steps, when the method says
+  bool finished = true;          ///< false: the run stopped before T, so `error` is not an error at T
+  double seconds = 0;            ///< wall time of one run [s], the fastest of the rounds
   /// accepted + rejected, when both are known.
   std::optional<long> attempts() const;
 };
@@ -74,20 +74,23 @@ struct WorkTiming {
 
 /// Seconds per call of each of `runs`, timed as WorkTiming says: round after round, each run in
 /// turn, the first run of round r being runs[r mod K]; the fastest sample of each run.
-std::vector<double> fastest_interleaved(const std::vector<std::function<void()>>& runs, const WorkTiming& timing);
+std::vector<double> fastest_interleaved(const std::vector<std::function<void()>>& runs,
+                                        const WorkTiming& timing);
 
 /// The point of `run` at `tolerance` against the reference y(T).
 template <int N>
 WorkPoint work_point(double tolerance, const WorkRun<N>& run, const Vec<N>& reference, double seconds) {
-  return {tolerance, (run.y - reference).cwiseAbs().maxCoeff(), run.rhs_evals, run.accepted,
-          run.rejected, run.finished, seconds};
+  return {tolerance,     (run.y - reference).cwiseAbs().maxCoeff(),
+          run.rhs_evals, run.accepted,
+          run.rejected,  run.finished,
+          seconds};
 }
 
 /// Every method at each of its tolerances, counted against `reference` = y(T) and timed
 /// interleaved (WorkTiming). Returns one curve per method, in order.
 template <int N>
-std::vector<WorkCurve> measure_work_precision(const std::vector<WorkMethod<N>>& methods, const Vec<N>& reference,
-                                              const WorkTiming& timing = {}) {
+std::vector<WorkCurve> measure_work_precision(const std::vector<WorkMethod<N>>& methods,
+                                              const Vec<N>& reference, const WorkTiming& timing = {}) {
   std::size_t total = 0;
   for (const auto& m : methods) total += m.tolerances.size();
   std::vector<WorkRun<N>> runs(total);  // one per (method, tolerance), in order

@@ -20,10 +20,14 @@ namespace kit {
 /// The style of a GSL stepper's curve.
 inline std::string gsl_look(GslStepper stepper) {
   switch (stepper) {
-    case GslStepper::rkck: return look::gsl_rkck + " pt 4";
-    case GslStepper::rkf45: return look::gsl_rkf45 + " pt 6";
-    case GslStepper::rk8pd: return look::gsl_rk8pd + " pt 8";
-    default: return look::prediction + " pt 1";
+    case GslStepper::rkck:
+      return look::gsl_rkck + " pt 4";
+    case GslStepper::rkf45:
+      return look::gsl_rkf45 + " pt 6";
+    case GslStepper::rk8pd:
+      return look::gsl_rk8pd + " pt 8";
+    default:
+      return look::prediction + " pt 1";
   }
 }
 

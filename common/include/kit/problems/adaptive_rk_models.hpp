@@ -18,7 +18,7 @@ struct Arenstorf {
   static Vec4 initial_state() { return {0.994, 0.0, 0.0, -2.00158510637908252240537862224}; }
   Vec4 operator()(double /*t*/, const Vec4& y) const {
     const double mu_earth = 1.0 - mu;
-    const double d1 = std::pow((y[0] + mu) * (y[0] + mu) + y[1] * y[1], 1.5);        // to the Earth
+    const double d1 = std::pow((y[0] + mu) * (y[0] + mu) + y[1] * y[1], 1.5);              // to the Earth
     const double d2 = std::pow((y[0] - mu_earth) * (y[0] - mu_earth) + y[1] * y[1], 1.5);  // to the Moon
     return {y[2], y[3], y[0] + 2 * y[3] - mu_earth * (y[0] + mu) / d1 - mu * (y[0] - mu_earth) / d2,
             y[1] - 2 * y[2] - mu_earth * y[1] / d1 - mu * y[1] / d2};
@@ -38,7 +38,8 @@ struct Kepler {
   Vec4 exact(double t) const {
     double big_e = t;
     for (int i = 0; i < 50; ++i) big_e -= (big_e - e * std::sin(big_e) - t) / (1 - e * std::cos(big_e));
-    const double c = std::cos(big_e), s = std::sin(big_e), root = std::sqrt(1 - e * e), rate = 1 / (1 - e * c);
+    const double c = std::cos(big_e), s = std::sin(big_e), root = std::sqrt(1 - e * e),
+                 rate = 1 / (1 - e * c);
     return {c - e, root * s, -s * rate, root * c * rate};
   }
 };

@@ -8,9 +8,9 @@ namespace kit {
 /// Free fall along one vertical axis. Sign convention: the axis points up, so g < 0 pulls
 /// down and a larger x is higher. The mass cancels out of x'' = g and is not a parameter.
 struct FreeFall {
-  double x0 = 20.0;   ///< initial height x(0) [m]
-  double v0 = 0.0;    ///< initial velocity v(0) [m/s], positive = upward
-  double g = -9.81;   ///< gravitational acceleration [m/s²], negative = downward
+  double x0 = 20.0;  ///< initial height x(0) [m]
+  double v0 = 0.0;   ///< initial velocity v(0) [m/s], positive = upward
+  double g = -9.81;  ///< gravitational acceleration [m/s²], negative = downward
 
   /// u(0) = (x0, v0).
   Vec2 initial_state() const { return {x0, v0}; }
@@ -46,9 +46,7 @@ struct FreeFall {
   /// |x_k − x̃(kΔt)| of either Euler after k steps: k/2 · Δt² · |g| [m]. The lecture drops
   /// the |g| (ERRATA item 1). Explicit Euler is off by +k/2 Δt² |g| (above the parabola for
   /// g < 0), implicit Euler by the same amount below.
-  double euler_error(long k, double dt) const {
-    return 0.5 * static_cast<double>(k) * dt * dt * std::abs(g);
-  }
+  double euler_error(long k, double dt) const { return 0.5 * static_cast<double>(k) * dt * dt * std::abs(g); }
 };
 
 }  // namespace kit

@@ -21,17 +21,17 @@ namespace kit {
 inline constexpr double dopri5_real_stability_boundary = 3.31;
 
 struct StiffnessRun {
-  double mu = 0;              ///< Van der Pol's μ
-  double two_periods = 0;     ///< the horizon asked for: twice max((3 − 2 ln 2)·μ, 2π), time units
-  double horizon = 0;         ///< the horizon reached: two_periods, or less when the budget ran out
-  bool adapted = false;       ///< true when the step budget ended the run before two_periods
-  long budget = 0;            ///< DOPRI5's step budget (accepted + rejected)
+  double mu = 0;           ///< Van der Pol's μ
+  double two_periods = 0;  ///< the horizon asked for: twice max((3 − 2 ln 2)·μ, 2π), time units
+  double horizon = 0;      ///< the horizon reached: two_periods, or less when the budget ran out
+  bool adapted = false;    ///< true when the step budget ended the run before two_periods
+  long budget = 0;         ///< DOPRI5's step budget (accepted + rejected)
   /// Steps two periods take when stability holds h·|λ| at the boundary b on the slow branches:
   /// 4 branches × (μ²/b)·∫₁² (x² − 1)²/x dx = 4·(ln 2 + 3/4)·μ²/b ≈ 1.74 μ².
   double predicted_steps = 0;
-  AdaptiveRun<Vec2> run;      ///< from y0 = (2, 0), rtol = atol = 1e-6, HINIT's first step
-  double median_step = 0;     ///< median accepted h, time units
-  double median_h_lambda = 0; ///< median of h·μ(x² − 1) over accepted steps with |x| > 1.2; NaN if none
+  AdaptiveRun<Vec2> run;       ///< from y0 = (2, 0), rtol = atol = 1e-6, HINIT's first step
+  double median_step = 0;      ///< median accepted h, time units
+  double median_h_lambda = 0;  ///< median of h·μ(x² − 1) over accepted steps with |x| > 1.2; NaN if none
   bool stability_bound = false;  ///< median_h_lambda within 15% of the stability boundary
 };
 
@@ -50,7 +50,8 @@ RunEstimate van_der_pol_estimate(double mu, const Dopri5Runner& dopri5, long bud
 
 /// The same run, its estimate announced first (run_estimate.hpp) under "van_der_pol", and its
 /// steps counted on the progress line.
-StiffnessRun van_der_pol_stiffness(Report& report, double mu, const Dopri5Runner& dopri5, long budget = 2'000'000);
+StiffnessRun van_der_pol_stiffness(Report& report, double mu, const Dopri5Runner& dopri5,
+                                   long budget = 2'000'000);
 
 /// Every value above as report fields (run_fields.hpp for the run), plus "boundary" = 3.31 and
 /// "verdict", the sentence that says which of stability and accuracy sets the step.

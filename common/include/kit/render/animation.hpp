@@ -31,8 +31,8 @@ AnimationResult encode_animation(const std::filesystem::path& frame_pattern, dou
 /// Writes `player` (a gnuplot script) that plays frames 0 … count − 1 of `frame_pattern`
 /// (relative to the script's folder, printf-style) at `fps` in a window:
 /// `gnuplot -persist player`. A slide author can rerun it; --show starts it.
-void write_player(const std::filesystem::path& player, const std::string& frame_pattern, long count, double fps,
-                  int width, int height);
+void write_player(const std::filesystem::path& player, const std::string& frame_pattern, long count,
+                  double fps, int width, int height);
 
 /// --show: starts the player in the background when a window can open (nothing waits for it),
 /// and returns what happened, or why no window opened (no display, no window terminal).

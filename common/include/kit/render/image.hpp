@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <vector>
 
-
 namespace kit {
 
 /// A colour: linear RGB, each in [0, 1] (more, before a picture is clamped). Not a Vec3: colours

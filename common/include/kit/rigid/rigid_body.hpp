@@ -29,12 +29,12 @@ struct BoxPart {
 /// What a body is made of: its mass, its inertia about its centre of mass in the body frame, and
 /// its geometry (boxes, for drawing and for contact with the ground).
 struct RigidShape {
-  std::string name;          ///< "box", "cylinder", "t-handle"
-  double mass = 1.0;         ///< M [kg]
-  Mat3 inertia = Mat3::Identity();  ///< I_body [kg·m²], about the centre of mass, body axes
+  std::string name;                         ///< "box", "cylinder", "t-handle"
+  double mass = 1.0;                        ///< M [kg]
+  Mat3 inertia = Mat3::Identity();          ///< I_body [kg·m²], about the centre of mass, body axes
   Mat3 inverse_inertia = Mat3::Identity();  ///< I_body⁻¹ [1/(kg·m²)]
-  std::vector<BoxPart> parts;       ///< the solid, centred on the centre of mass
-  std::vector<Vec3> corners;        ///< points of the surface that can touch the ground [m]
+  std::vector<BoxPart> parts;               ///< the solid, centred on the centre of mass
+  std::vector<Vec3> corners;                ///< points of the surface that can touch the ground [m]
 
   /// The principal moments I1 ≤ I2 ≤ I3 [kg·m²].
   Vec3 principal_moments() const;

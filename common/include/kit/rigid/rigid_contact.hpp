@@ -23,10 +23,10 @@ namespace kit {
 inline constexpr double standard_gravity = 9.81;
 
 struct GroundContact {
-  double restitution = 0.5;    ///< e in [0, 1]: the normal speed kept, as a fraction
-  double friction = 0.3;       ///< μ ≥ 0, Coulomb
-  double resting_speed = 0.05; ///< [m/s] below this approach speed a contact does not bounce (e = 0),
-                               ///< so that a body at rest does not chatter
+  double restitution = 0.5;           ///< e in [0, 1]: the normal speed kept, as a fraction
+  double friction = 0.3;              ///< μ ≥ 0, Coulomb
+  double resting_speed = 0.05;        ///< [m/s] below this approach speed a contact does not bounce (e = 0),
+                                      ///< so that a body at rest does not chatter
   double gravity = standard_gravity;  ///< g [m/s²] pulling the body along −y
 };
 

@@ -11,9 +11,9 @@ namespace kit {
 
 /// One flat face of a box part, in the world.
 struct RigidFace {
-  std::array<Vec3, 4> corners;   ///< [m], counter-clockwise seen from outside the box
-  Vec3 normal = Vec3::UnitY();   ///< outward, unit
-  std::size_t part = 0;          ///< the index in RigidShape::parts of the box it bounds
+  std::array<Vec3, 4> corners;  ///< [m], counter-clockwise seen from outside the box
+  Vec3 normal = Vec3::UnitY();  ///< outward, unit
+  std::size_t part = 0;         ///< the index in RigidShape::parts of the box it bounds
 };
 
 /// The faces of every part of `shape` with the body at `state`: 6 per part, part by part, each

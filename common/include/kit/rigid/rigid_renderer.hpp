@@ -21,7 +21,8 @@ Colour rigid_part_colour(std::size_t part);
 /// light_intensity(face normal) (raster.hpp). A face with a corner that cannot be projected (not
 /// finite, nearer than Pinhole::near_depth, far off the image) is skipped: a diverged body
 /// leaves the picture, not the run. Throws as Pinhole for a bad camera or size.
-Image render_rigid(const RigidShape& shape, const RigidState& state, const Camera& camera, int width, int height);
+Image render_rigid(const RigidShape& shape, const RigidState& state, const Camera& camera, int width,
+                   int height);
 
 /// The view rigid runs are seen in: from the front (+z), right and 20° above, at the middle of
 /// the region the body can cover over `frames` (a sphere of the shape's bounding radius about each

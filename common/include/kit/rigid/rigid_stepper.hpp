@@ -46,8 +46,12 @@ static_assert(rotation_integrator_names.in_order());
 
 /// All six, in the order above (the lecture's first).
 inline constexpr auto rotation_integrators = rotation_integrator_names.all();
-inline std::string flag_name(RotationIntegrator integrator) { return rotation_integrator_names.flag(integrator); }
-inline std::string display_name(RotationIntegrator integrator) { return rotation_integrator_names.display(integrator); }
+inline std::string flag_name(RotationIntegrator integrator) {
+  return rotation_integrator_names.flag(integrator);
+}
+inline std::string display_name(RotationIntegrator integrator) {
+  return rotation_integrator_names.display(integrator);
+}
 /// The exercises it runs ("ex 8.3, 8.1"), or "" for the kit's own.
 std::string exercises_of(RotationIntegrator integrator);
 

@@ -60,8 +60,8 @@ struct Death {
 struct UpdateWork {
   long particle_steps = 0;  ///< every particle, every step (motion)
   long gravity = 0;
-  long drag = 0;            ///< drag, and wind through it
-  long colour = 0, alpha = 0, size = 0;  ///< rates of change over life
+  long drag = 0;                             ///< drag, and wind through it
+  long colour = 0, alpha = 0, size = 0;      ///< rates of change over life
   long alpha_checks = 0, region_checks = 0;  ///< death tests beyond the lifetime
   long deaths = 0;
 };
@@ -91,8 +91,8 @@ class ParticleUpdate {
   double drag_ = 0;
   bool has_gravity_ = false, has_drag_ = false;
   bool has_colour_rate_ = false, has_alpha_rate_ = false, has_size_rate_ = false;
-  std::vector<Rates> rates_;              // per emitter [1/s], [m/s]
-  std::vector<bool> bursts_on_death_;     // per emitter
+  std::vector<Rates> rates_;           // per emitter [1/s], [m/s]
+  std::vector<bool> bursts_on_death_;  // per emitter
   DeathRules death_;
   UpdateWork work_;
 };

@@ -63,16 +63,17 @@ class Particles {
   /// Removes every particle.
   void clear() { count_ = 0; }
   /// Bytes per particle over all arrays.
-  static constexpr std::size_t bytes_per_particle = 13 * sizeof(float) + sizeof(std::uint8_t) + sizeof(std::uint32_t);
+  static constexpr std::size_t bytes_per_particle =
+      13 * sizeof(float) + sizeof(std::uint8_t) + sizeof(std::uint32_t);
 
   // The arrays, each of length capacity(); entries at and past size() are unspecified.
-  ParticleArray<float> x, y, z;      ///< position [m]
-  ParticleArray<float> vx, vy, vz;   ///< velocity [m/s]
-  ParticleArray<float> age;          ///< time since emission [s]
-  ParticleArray<float> lifetime;     ///< age at which it dies [s]
-  ParticleArray<float> size_m;       ///< sprite edge [m]
-  ParticleArray<float> r, g, b;      ///< colour, linear in [0, 1]
-  ParticleArray<float> alpha;        ///< opacity in [0, 1]
+  ParticleArray<float> x, y, z;         ///< position [m]
+  ParticleArray<float> vx, vy, vz;      ///< velocity [m/s]
+  ParticleArray<float> age;             ///< time since emission [s]
+  ParticleArray<float> lifetime;        ///< age at which it dies [s]
+  ParticleArray<float> size_m;          ///< sprite edge [m]
+  ParticleArray<float> r, g, b;         ///< colour, linear in [0, 1]
+  ParticleArray<float> alpha;           ///< opacity in [0, 1]
   ParticleArray<std::uint8_t> emitter;  ///< which emitter made it
   ParticleArray<std::uint32_t> id;      ///< serial number of emission (never read by the update)
 

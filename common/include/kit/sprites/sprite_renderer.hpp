@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include <kit/render/image.hpp>
 #include <kit/render/camera.hpp>
+#include <kit/render/image.hpp>
 #include <kit/sprites/particles.hpp>
 #include <kit/sprites/sprite_scene.hpp>
 #include <kit/sprites/sprite_texture.hpp>
@@ -18,8 +18,8 @@ namespace kit {
 /// What one frame cost. Every alive particle is either drawn or culled.
 struct RenderStats {
   long sprites_drawn = 0;
-  long sprites_culled = 0;   ///< behind the near plane, wholly off the image, size or alpha ≤ 0
-  long pixels_blended = 0;   ///< pixel writes, summed over sprites
+  long sprites_culled = 0;  ///< behind the near plane, wholly off the image, size or alpha ≤ 0
+  long pixels_blended = 0;  ///< pixel writes, summed over sprites
 };
 
 /// Composites one rasterized sprite onto the image, "over" (ex 5.3, plugged in by the chapter).
@@ -50,9 +50,9 @@ class SpriteRenderer {
  private:
   // One visible particle, placed on the image.
   struct Sprite {
-    double px, py;       // centre [px]
-    double edge;         // [px]
-    double depth;        // [m]
+    double px, py;        // centre [px]
+    double edge;          // [px]
+    double depth;         // [m]
     std::uint32_t index;  // into the particles
   };
   // Rasterizes `sprite` into `target`: ImageTarget<mode> blends into the image, TileTarget
@@ -63,10 +63,10 @@ class SpriteRenderer {
   Pinhole camera_;
   Colour background_;
   std::vector<Blend> blend_of_emitter_;
-  std::vector<std::vector<Texture>> textures_;         // mip_levels of each distinct texture
-  std::map<std::string, std::size_t> texture_index_;   // texture name or path -> textures_
-  std::vector<std::size_t> texture_of_emitter_;        // emitter -> textures_
-  std::vector<Sprite> over_, additive_;                // this frame's sprites, kept for their capacity
+  std::vector<std::vector<Texture>> textures_;        // mip_levels of each distinct texture
+  std::map<std::string, std::size_t> texture_index_;  // texture name or path -> textures_
+  std::vector<std::size_t> texture_of_emitter_;       // emitter -> textures_
+  std::vector<Sprite> over_, additive_;               // this frame's sprites, kept for their capacity
   // Per image column of the sprite being drawn: the two texel columns either side of the pixel
   // centre, the weight of the right one, and the fraction of the pixel the square covers.
   struct ColumnSample {

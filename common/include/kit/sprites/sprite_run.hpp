@@ -18,13 +18,13 @@
 namespace kit {
 
 struct SpriteRunOptions {
-  long frames = 120;            ///< rendered frames
-  long warmup_frames = 0;       ///< run before them, counted but not rendered
-  double fps = 30;              ///< [1/s]
+  long frames = 120;       ///< rendered frames
+  long warmup_frames = 0;  ///< run before them, counted but not rendered
+  double fps = 30;         ///< [1/s]
   std::uint64_t seed = 1;
   Integrator integrator = Integrator::exact;
   long max_particles = 100000;
-  int width = 640, height = 360;  ///< [px]
+  int width = 640, height = 360;    ///< [px]
   std::filesystem::path frame_dir;  ///< empty: no frames rendered nor written
   CompositeOver over = nullptr;     ///< ex 5.3, or nullptr for the renderer's own
   int paths = 24;                   ///< particles whose paths are recorded
@@ -43,12 +43,12 @@ struct SpriteRecording {
   std::vector<FrameCounts> frames;  ///< one per frame run, warm-up frames first
   SpriteTotals totals;
   UpdateWork work;
-  RenderStats render;               ///< summed over the frames rendered
+  RenderStats render;  ///< summed over the frames rendered
   std::vector<ParticlePath> paths;
-  FrameSequence rendered;           ///< the frames written, with those kept for the contact sheet
-  long warmup_frames = 0;           ///< the first frames, run but not rendered
+  FrameSequence rendered;  ///< the frames written, with those kept for the contact sheet
+  long warmup_frames = 0;  ///< the first frames, run but not rendered
   long peak_alive = 0;
-  long diverged_at = -1;            ///< first frame with a non-finite position, or −1
+  long diverged_at = -1;  ///< first frame with a non-finite position, or −1
 };
 
 /// Mean particles each emitter adds a frame at steady state: its rate, or for a burst emitter,
@@ -60,12 +60,14 @@ double expected_alive(const SpriteScene& scene, const SpriteRunOptions& options)
 /// What a recording's frames become in `out` (finish_animation): contact_sheet.png (the kept
 /// frames, 4 a row), animation.mp4 and .gif (ffmpeg, when installed) and play.gp (a gnuplot
 /// player). Nothing when no frame was rendered (a run that diverged before its first frame).
-std::optional<AnimationOutputs> write_animation(const SpriteRecording& recording, const SpriteRunOptions& options,
+std::optional<AnimationOutputs> write_animation(const SpriteRecording& recording,
+                                                const SpriteRunOptions& options,
                                                 const std::filesystem::path& out);
 
 /// Runs `scene` for options.frames frames with the student's kernels. Reports one unit of
 /// progress per frame. Stops early, and says so in diverged_at, when a position becomes
 /// non-finite: the frames so far are kept.
-SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOptions& options, SpriteKernels kernels);
+SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOptions& options,
+                                 SpriteKernels kernels);
 
 }  // namespace kit

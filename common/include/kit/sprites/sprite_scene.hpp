@@ -53,35 +53,35 @@ struct Emitter {
   EmitterShape shape = EmitterShape::point;
   Vec3 position{0, 0, 0};  ///< [m]
   Vec3 axis{0, 1, 0};      ///< unit direction (normalised on load)
-  double radius = 0;        ///< disc and sphere [m]
-  double angle_deg = 0;     ///< disc and cone half-angle [deg], in [0, 180]
-  Spread rate;              ///< particles per frame (a fraction rounds up with that probability)
-  Spread speed;             ///< initial speed [m/s]
-  Spread lifetime{1, 0};    ///< [s]; mean − variance > 0
-  Spread size{0.1, 0};      ///< sprite edge [m]
-  Colour colour{1, 1, 1};    ///< mean linear RGB in [0, 1]
+  double radius = 0;       ///< disc and sphere [m]
+  double angle_deg = 0;    ///< disc and cone half-angle [deg], in [0, 180]
+  Spread rate;             ///< particles per frame (a fraction rounds up with that probability)
+  Spread speed;            ///< initial speed [m/s]
+  Spread lifetime{1, 0};   ///< [s]; mean − variance > 0
+  Spread size{0.1, 0};     ///< sprite edge [m]
+  Colour colour{1, 1, 1};  ///< mean linear RGB in [0, 1]
   Colour colour_variance{0, 0, 0};
-  Spread alpha{1, 0};       ///< opacity in [0, 1]
+  Spread alpha{1, 0};  ///< opacity in [0, 1]
   // Rates of change over a particle's life (Reeves: per frame; here per second, so Δt can vary).
   // Zero means the attribute stays constant and nothing is computed for it.
   Colour colour_rate{0, 0, 0};  ///< [1/s]
-  double alpha_rate = 0;       ///< [1/s], negative fades out
-  double size_rate = 0;        ///< [m/s]
+  double alpha_rate = 0;        ///< [1/s], negative fades out
+  double size_rate = 0;         ///< [m/s]
   Blend blend = Blend::over;
   std::string texture = "soft";  ///< built-in name (soft, spark, flake, smoke) or a PNG path
   /// Emits only in bursts, when a particle of another emitter dies (never per frame).
   bool burst_only = false;
   /// Index of the emitter that bursts where this emitter's particles die (fireworks).
   std::optional<int> on_death;
-  double inherit_velocity = 0;  ///< fraction of the dead particle's velocity a burst inherits
-  long first_frame = 0;         ///< emits per frame from this frame on
+  double inherit_velocity = 0;     ///< fraction of the dead particle's velocity a burst inherits
+  long first_frame = 0;            ///< emits per frame from this frame on
   std::optional<long> last_frame;  ///< … up to and including this one
 };
 
 /// The forces of the scene; each one is there only when the scene names it.
 struct SpriteForces {
   std::optional<Vec3> gravity;  ///< [m/s²]
-  std::optional<double> drag;    ///< linear drag rate k [1/s]: a = −k (v − wind)
+  std::optional<double> drag;   ///< linear drag rate k [1/s]: a = −k (v − wind)
   std::optional<Vec3> wind;     ///< [m/s]; acts through drag, so it needs drag
 };
 
@@ -99,9 +99,9 @@ constexpr long max_particles_bound = 1'000'000'000'000;
 
 struct SpriteScene {
   std::string name;
-  std::string file;           ///< where it was read from
-  long frames = 120;          ///< default for --frames
-  double fps = 30;            ///< default for --fps
+  std::string file;   ///< where it was read from
+  long frames = 120;  ///< default for --frames
+  double fps = 30;    ///< default for --fps
   /// Seconds simulated before the first frame, so that a scene starts in its steady state
   /// (snow already falling); those frames are counted but not rendered.
   double warmup = 0;

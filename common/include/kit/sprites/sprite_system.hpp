@@ -21,7 +21,7 @@ using SampleParticle = ParticleSpawn (*)(const Emitter& emitter, std::uint8_t in
 using AgeAndKill = long (*)(Particles& particles, float dt, const DeathRules& rules,
                             const std::vector<bool>& bursts_on_death, std::vector<Death>& deaths);
 struct SpriteKernels {
-  SampleParticle sample;     ///< ex 5.1
+  SampleParticle sample;    ///< ex 5.1
   AgeAndKill age_and_kill;  ///< ex 5.2
 };
 

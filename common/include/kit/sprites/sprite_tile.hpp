@@ -8,9 +8,9 @@
 namespace kit {
 
 struct SpriteTile {
-  int x0 = 0, y0 = 0;          ///< image column and row of the tile's top-left pixel (may be < 0)
-  int width = 0, height = 0;   ///< [px]
-  std::vector<float> rgba;     ///< width·height pixels, row by row: r, g, b, alpha, each in [0, 1]
+  int x0 = 0, y0 = 0;         ///< image column and row of the tile's top-left pixel (may be < 0)
+  int width = 0, height = 0;  ///< [px]
+  std::vector<float> rgba;    ///< width·height pixels, row by row: r, g, b, alpha, each in [0, 1]
 
   /// Pixel (column, row) of the tile, 0 ≤ column < width, 0 ≤ row < height.
   const float* at(int column, int row) const { return rgba.data() + 4 * (row * width + column); }
