@@ -3,7 +3,8 @@
 // checked, the network ex 6.2 built, and what Provot's strain limit did.
 #include <kit/app/report.hpp>
 #include <kit/cloth/cloth_run.hpp>
-#include <kit/cloth/spring_force_check.hpp>
+
+#include "spring_force_check.hpp"
 
 namespace kit {
 

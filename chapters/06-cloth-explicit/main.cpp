@@ -9,7 +9,6 @@
 
 #include <kit/app/chapter_app.hpp>
 #include <kit/cloth/cloth_estimate.hpp>
-#include <kit/cloth/spring_force_check.hpp>
 
 #include "cloth_figures.hpp"
 #include "cloth_flags.hpp"
@@ -18,6 +17,7 @@
 #include "cloth_report.hpp"
 #include "cloth_spring_force.hpp"
 #include "cloth_tables.hpp"
+#include "spring_force_check.hpp"
 
 namespace {
 namespace fs = std::filesystem;

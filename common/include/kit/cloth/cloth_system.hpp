@@ -18,6 +18,10 @@ using SymplecticClothStep = void (*)(NodeArray& x, NodeArray& v, const Eigen::Ve
                                      NodeArray& f, double dt);
 using SphereResponse = long (*)(NodeArray& x, NodeArray& v, const SphereCollider& sphere);
 using SpringBuilder = Springs (*)(const ClothGrid& grid, const SpringLayout& layout);
+/// Ex 6.1's force on a spring's end a [N], from both ends' positions [m] and velocities [m/s], the
+/// rest length [m] and the family's K and μ (chapter 6 checks it; chapter 9's springs model uses it).
+using SpringForce = Vec3 (*)(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double rest,
+                             const SpringFamily& family);
 struct ClothKernels {
   SpringBuilder build_springs = nullptr;          ///< ex 6.2, for experiments that build many cloths
   SymplecticClothStep symplectic_step = nullptr;  ///< needed by ClothIntegrator::symplectic_euler

@@ -13,7 +13,7 @@
 
 #include <kit/base/enum_names.hpp>
 #include <kit/cloth/cloth_implicit_kernels.hpp>
-#include <kit/cloth/spring_force_check.hpp>
+#include <kit/cloth/cloth_system.hpp>
 #include <kit/fem/fem_element.hpp>
 #include <kit/fem/fem_mesh.hpp>
 

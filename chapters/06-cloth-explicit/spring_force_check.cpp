@@ -1,5 +1,5 @@
 // Checks of a spring force (spring_force_check.hpp).
-#include <kit/cloth/spring_force_check.hpp>
+#include "spring_force_check.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,12 +2,9 @@
 // What chapter 6 checks of a spring force (ex 6.1) before a cloth is built on it: Newton's third
 // law, the force as minus the gradient of the spring energy ½K(l − L0)², and damping that only
 // resists changes of length.
-#include <kit/cloth/cloth.hpp>
+#include <kit/cloth/cloth_system.hpp>
 
 namespace kit {
-
-using SpringForce = Vec3 (*)(const Vec3& xa, const Vec3& xb, const Vec3& va, const Vec3& vb, double rest,
-                             const SpringFamily& family);
 
 struct SpringForceCheck {
   int springs = 0;             ///< random springs tried
