@@ -11,7 +11,8 @@
 #include <kit/ode/adaptive_run.hpp>
 #include <kit/ode/work_precision.hpp>
 #include <kit/problems/orbit_problem.hpp>
-#include <kit/problems/van_der_pol_stiffness.hpp>
+
+#include "van_der_pol_stiffness.hpp"
 
 namespace kit {
 

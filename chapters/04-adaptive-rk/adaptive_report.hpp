@@ -5,7 +5,8 @@
 #include <vector>
 
 #include <kit/app/report.hpp>
-#include <kit/problems/van_der_pol_stiffness.hpp>
+
+#include "van_der_pol_stiffness.hpp"
 
 namespace kit {
 

@@ -17,7 +17,6 @@
 #include <kit/ode/embedded_run.hpp>
 #include <kit/ode/work_precision.hpp>
 #include <kit/ode/work_precision_methods.hpp>
-#include <kit/problems/van_der_pol_stiffness.hpp>
 
 // The kit's production DOPRI5, unless this is a student edition without production code: then
 // chapter 4's DOPRI5 is the student's own (ex 4.2 on the Dormand–Prince tableau, ex 4.3's PI law).
@@ -35,6 +34,7 @@
 #include "pi_controller.hpp"
 #include "rk4.hpp"
 #include "step_doubling.hpp"
+#include "van_der_pol_stiffness.hpp"
 
 namespace kit {
 

@@ -14,11 +14,11 @@
 #include <kit/ode/run_fields.hpp>
 #include <kit/ode/work_precision.hpp>
 #include <kit/problems/orbit_problem.hpp>
-#include <kit/problems/van_der_pol_stiffness.hpp>
 
 #include "adaptive_figures.hpp"
 #include "adaptive_report.hpp"
 #include "adaptive_rk_methods.hpp"
+#include "van_der_pol_stiffness.hpp"
 #include "work_precision_report.hpp"
 
 namespace {

@@ -15,6 +15,7 @@
 
 #include "chapter_run.hpp"
 #include "process.hpp"
+#include "van_der_pol_stiffness.hpp"
 
 using nlohmann::json;
 
@@ -191,4 +192,21 @@ TEST_CASE("chapter 4 answers bad input with exit 2, a message naming the flag, a
                                           {{"--mu", "-1"}, "--mu"},
                                           {{"--eccentricity", "1"}, "--eccentricity"},
                                           {{"--bogus"}, "--bogus"}});
+}
+
+TEST_CASE("Van der Pol's estimate: the predicted steps, or the budget when fewer") {
+  // A stand-in DOPRI5 for the calibration (the estimate's steps do not depend on it): explicit
+  // Euler steps of 1e-3, as many as it is asked for.
+  const kit::Dopri5Runner euler = [](const kit::VanDerPol& f, const kit::Vec2& y0, double, long max_steps) {
+    kit::AdaptiveRun<kit::Vec2> run;
+    kit::Vec2 y = y0;
+    for (long k = 0; k < max_steps; ++k) y += 1e-3 * f(1e-3 * double(k), y), run.step_sizes.push_back(1e-3);
+    run.accepted.push(1e-3 * double(max_steps), y);
+    return run;
+  };
+  CHECK(kit::van_der_pol_estimate(100, euler).steps == Approx(4 * (std::log(2.0) + 0.75) * 1e4 / 3.31));
+  const kit::RunEstimate big = kit::van_der_pol_estimate(1e4, euler, 2'000'000);
+  CHECK(big.steps == 2'000'000);
+  CHECK(big.bytes == 48 * 2e6);
+  CHECK(big.seconds_per_step > 0);
 }

@@ -6,7 +6,6 @@
 #include <kit/app/run_estimate.hpp>
 #include <kit/base/usage.hpp>
 #include <kit/ode/step_budget.hpp>
-#include <kit/problems/van_der_pol_stiffness.hpp>
 
 TEST_CASE("an estimate is its steps times the cost of a step; memory and time for a person to read") {
   const kit::RunEstimate e{2e9, 3e-9, 4e7};
@@ -46,23 +45,6 @@ TEST_CASE("the round-off sweep's estimate counts its runs: every count in double
   // At the budget (T = 10 s: the finest double run is 2e9 steps), the counts grow with it.
   const auto raised = kit::budget_sweep(10.0, 0.1, 1e-9, 2'000'000'000);
   CHECK(kit::roundoff_estimate(raised, floats, costs).steps > 2 * e.steps);
-}
-
-TEST_CASE("Van der Pol's estimate: the predicted steps, or the budget when fewer") {
-  // A stand-in DOPRI5 for the calibration (the estimate's steps do not depend on it): explicit
-  // Euler steps of 1e-3, as many as it is asked for.
-  const kit::Dopri5Runner euler = [](const kit::VanDerPol& f, const kit::Vec2& y0, double, long max_steps) {
-    kit::AdaptiveRun<kit::Vec2> run;
-    kit::Vec2 y = y0;
-    for (long k = 0; k < max_steps; ++k) y += 1e-3 * f(1e-3 * double(k), y), run.step_sizes.push_back(1e-3);
-    run.accepted.push(1e-3 * double(max_steps), y);
-    return run;
-  };
-  CHECK(kit::van_der_pol_estimate(100, euler).steps == Approx(4 * (std::log(2.0) + 0.75) * 1e4 / 3.31));
-  const kit::RunEstimate big = kit::van_der_pol_estimate(1e4, euler, 2'000'000);
-  CHECK(big.steps == 2'000'000);
-  CHECK(big.bytes == 48 * 2e6);
-  CHECK(big.seconds_per_step > 0);
 }
 
 TEST_CASE("announcing: stored always, printed when long or large, refused with the flags and the estimate "

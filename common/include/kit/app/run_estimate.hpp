@@ -9,7 +9,7 @@
 // Each estimate is a file of its own named for what it prices: cloth/cloth_estimate.hpp and
 // sprites/sprite_estimate.hpp for a model's runs, NN-name/*_estimate.hpp for a chapter's
 // (chapters 7, 8, 9), ode/step_budget.hpp for chapter 1's round-off sweep; Van der Pol's, a
-// calibration and one product, stays with its run (problems/van_der_pol_stiffness.hpp).
+// calibration and one product, stays with its run (chapter 4's van_der_pol_stiffness.hpp).
 #include <string>
 #include <string_view>
 

@@ -1,4 +1,4 @@
-#include <kit/problems/van_der_pol_stiffness.hpp>
+#include "van_der_pol_stiffness.hpp"
 
 #include <algorithm>
 #include <cmath>
