@@ -242,7 +242,8 @@ TEST_CASE("cloth: just below Δt_max the flag hangs; just above it, it explodes"
   }
 }
 
-TEST_CASE("chapter 6: the printed numbers are the ones measured: Δt_max, the 1/N law, strain, the mesh") {
+TEST_CASE("chapter 6: the printed numbers are the ones measured: Δt_max, the 1/N law, strain, the mesh",
+          "[whole-run]") {
   kit::test::TempDir out("ch06");
   const json j = run_chapter({"--no-plot"}, out.path());
   CHECK(j["parameters"]["quick"] == false);

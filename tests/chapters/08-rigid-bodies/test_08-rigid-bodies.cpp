@@ -25,6 +25,8 @@ json run_chapter(std::vector<std::string> args, int expected_exit = 0) {
   return kit::test::run_chapter_json(binary, std::move(args), "ch08", expected_exit);
 }
 
+// The run at the lecture's sizes, shared by the cases tagged [whole-run] (left out under the
+// sanitizers, whose suite runs the chapter whole at smaller sizes: tests/CMakeLists.txt).
 const json& default_run() {
   static const json summary = run_chapter({});
   return summary;
@@ -34,7 +36,8 @@ double number(const json& value) { return value.is_number() ? double(value) : NA
 }  // namespace
 
 TEST_CASE("chapter 8: the midpoint and RK4 flip the T-handle as GSL does, at the closed form's interval "
-          "within 1e-5") {
+          "within 1e-5",
+          "[whole-run]") {
   const json& s = default_run();
   const double closed_form = double(s["body"]["interval"]);
   CHECK(closed_form == Approx(1.67598).epsilon(1e-5));  // half of 4K(k)/λ, Landau & Lifshitz §37
@@ -75,7 +78,8 @@ TEST_CASE(
   CHECK(double(m["orthonormality"]) < 1e-13);
 }
 
-TEST_CASE("chapter 8: what each integrator keeps: R on SO(3), |L| exactly, the energy within its claim") {
+TEST_CASE("chapter 8: what each integrator keeps: R on SO(3), |L| exactly, the energy within its claim",
+          "[whole-run]") {
   const json& i = default_run()["integrators"];
   CHECK(double(i["euler-R"]["orthonormality"]) > 0.1);  // the lecture's ODE as written leaves SO(3)
   for (const char* name : {"euler-R-polar", "euler-q", "exp-map", "midpoint", "rk4"}) {
@@ -97,7 +101,8 @@ TEST_CASE("chapter 8: what each integrator keeps: R on SO(3), |L| exactly, the e
 }
 
 TEST_CASE(
-    "chapter 8: spun about its largest or smallest axis the T-handle stays; about the middle one it flips") {
+    "chapter 8: spun about its largest or smallest axis the T-handle stays; about the middle one it flips",
+    "[whole-run]") {
   const json& axes = default_run()["axes"];
   REQUIRE(axes.size() == 3);
   int intermediates = 0;
@@ -116,7 +121,8 @@ TEST_CASE(
 }
 
 TEST_CASE("chapter 8: the midpoint and RK4 flip 6 times up to h = 30 ms; the first-order steps never get the "
-          "rate") {
+          "rate",
+          "[whole-run]") {
   for (const json& row : default_run()["flip_sweep"]) {
     const std::string name = row["integrator"];
     INFO(row.dump());
@@ -129,7 +135,7 @@ TEST_CASE("chapter 8: the midpoint and RK4 flip 6 times up to h = 30 ms; the fir
   }
 }
 
-TEST_CASE("chapter 8: the trade shows orders 4 and 2, and RK4's round-off floor") {
+TEST_CASE("chapter 8: the trade shows orders 4 and 2, and RK4's round-off floor", "[whole-run]") {
   std::map<std::string, std::map<long, double>> error;
   for (const json& row : default_run()["trade"])
     error[row["integrator"]][long(row["steps"])] = number(row["error"]);
