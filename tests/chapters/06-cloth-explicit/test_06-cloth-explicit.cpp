@@ -349,7 +349,8 @@ TEST_CASE("chapter 6: a resolution too large for the machine is refused up front
   CHECK_FALSE(fs::exists(out.path() / "f"));
 }
 
-TEST_CASE("chapter 6: --quick runs every section, its table at 8 nodes across and its sweeps to N = 32") {
+TEST_CASE("chapter 6: --quick runs every section, its table at 8 nodes across and its sweeps to N = 32",
+          "[quick-run]") {
   kit::test::TempDir out("ch06-quick");
   const json quick = run_chapter({"--no-plot", "--quick"}, out.path());
   CHECK(quick["parameters"]["quick"] == true);

@@ -516,7 +516,8 @@ TEST_CASE("chapter 7: bad flags are usage errors that name the flag") {
                                          });
 }
 
-TEST_CASE("chapter 7: --quick runs every section on fewer stiffnesses and steps, and a trade over 1/3 s") {
+TEST_CASE("chapter 7: --quick runs every section on fewer stiffnesses and steps, and a trade over 1/3 s",
+          "[quick-run]") {
   kit::test::TempDir out("ch07-quick");
   const json quick = run_chapter({"--no-plot", "--quick"}, out.path());
   CHECK(quick["parameters"]["quick"] == true);

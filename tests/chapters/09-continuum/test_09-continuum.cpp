@@ -312,7 +312,8 @@ TEST_CASE("chapter 9 answers bad input with exit 2, a message naming the flag, a
                                           {{"--young", "1e12", "--t-end", "100"}, "over the limit"}});
 }
 
-TEST_CASE("chapter 9: --quick runs every section, the cost of accuracy's cantilevers to 4 elements high") {
+TEST_CASE("chapter 9: --quick runs every section, the cost of accuracy's cantilevers to 4 elements high",
+          "[quick-run]") {
   const json quick = run_chapter({"--quick"});
   CHECK(quick["parameters"]["quick"] == true);
   CHECK_FALSE(quick.contains("skipped"));
