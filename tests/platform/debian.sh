@@ -6,7 +6,8 @@
 #   run     ./kit run: every chapter, with only the chapters' packages (no Catch2 is installed)
 #   bench   ./kit bench cloth-implicit: installs Bullet into the tree `run` configured, then builds
 #           and runs that benchmark (a package a command installs serves that command at once)
-#   test    ./kit test: every test, as CI runs it (CI=true: warnings are errors)
+#   test    ./kit test: every test (CI=true: warnings are errors)
+#   quick   ./kit test --quick: every test but the slow ones (CI=true), as CI runs it
 #   sanitizers  ./kit --preset asan-ubsan build with the release's clang (installed by the kit),
 #           then ./kit fuzz 30
 #   grades  ./kit grade of solutions/, exercises/ and a partly solved copy (five exercises solved,
@@ -24,7 +25,7 @@
 # Example: tests/platform/debian.sh trixie && tests/platform/debian.sh bookworm &&
 #          tests/platform/compare_figures.py /var/tmp/kit-platform/{bookworm,trixie}.figures
 set -euo pipefail
-usage() { echo "usage: $0 RELEASE [run|bench|test|sanitizers|grades|refused]...   (RELEASE: bookworm, trixie, ...)" >&2; exit 2; }
+usage() { echo "usage: $0 RELEASE [run|bench|test|quick|sanitizers|grades|refused]...   (RELEASE: bookworm, trixie, ...)" >&2; exit 2; }
 (($# >= 1)) || usage
 release=$1
 shift
@@ -32,7 +33,7 @@ shift
 stages=("$@")
 ((${#stages[@]})) || stages=(run bench test)
 for stage in "${stages[@]}"; do
-  case "$stage" in run | bench | test | sanitizers | grades | refused) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test sanitizers grades refused" >&2; exit 2 ;; esac
+  case "$stage" in run | bench | test | quick | sanitizers | grades | refused) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test quick sanitizers grades refused" >&2; exit 2 ;; esac
 done
 [ "$(id -u)" -eq 0 ] || { echo "debian.sh: needs root (debootstrap and mounts)" >&2; exit 2; }
 
@@ -103,8 +104,10 @@ for stage in "${stages[@]}"; do
       timed "./kit bench cloth-implicit (installs Bullet into the tree run configured)" \
         inside './kit bench cloth-implicit >/root/kit-bench.log 2>&1 || { tail -40 /root/kit-bench.log; exit 1; }; grep -c "" /root/kit-bench.log; grep -m3 -i bullet /root/kit-bench.log'
       ;;
-    test)
-      timed "./kit test" inside './kit test >/root/kit-test.log 2>&1 || { grep -E "tests passed|tests failed|\*\*\*Failed|Timeout|Not Run" /root/kit-test.log | tail -40; exit 1; }; tail -4 /root/kit-test.log'
+    test | quick)
+      words="./kit test"
+      if [ "$stage" = quick ]; then words+=" --quick"; fi
+      timed "$words" inside "$words"' >/root/kit-test.log 2>&1 || { grep -E "tests passed|tests failed|\*\*\*Failed|Timeout|Not Run" /root/kit-test.log | tail -40; exit 1; }; tail -4 /root/kit-test.log'
       ;;
     sanitizers)
       timed "./kit --preset asan-ubsan build (the release's clang), then ./kit fuzz 30" inside '
