@@ -65,14 +65,23 @@ std::vector<StiffnessRow> stiffness_sweep(const ClothScene& scene, ClothKernels 
     row.measured = measure_dt_max(springs_only(sheet), springs, kernels, ClothIntegrator::symplectic_euler,
                                   0.5 * row.predicted, 2 * row.predicted);
     for (const ImplicitMethod method : all_implicit_methods) {
-      const ClothRecording rec =
-          run_cloth(sheet, springs, kernels, implicit_run(method, settings, implicit, h, t_end));
+      ClothRunOptions options = implicit_run(method, settings, implicit, h, t_end);
+      options.samples = int(std::lround(t_end / h));  // one energy sample a step
+      const ClothRecording rec = run_cloth(sheet, springs, kernels, options);
       ImplicitStability s;
       s.method = method;
-      s.energy_change = rec.samples.back().total() - rec.samples.front().total();
+      const double e0 = rec.samples.front().total();
+      const double tolerance = 1e-9 * (std::abs(e0) + 1);  // [J]: round-off in E of a few joules
+      s.energy_change = rec.samples.back().total() - e0;
+      s.largest_rise = -INFINITY;
+      for (std::size_t step = 1; step < rec.samples.size(); ++step) {
+        const double rise = rec.samples[step].total() - rec.samples[step - 1].total();
+        s.peak_gain = std::max(s.peak_gain, rec.samples[step].total() - e0);
+        s.largest_rise = std::max(s.largest_rise, rise);
+        s.rising_steps += rise > tolerance;
+      }
       s.failure = rec.failure;
       s.iterations = iterations_of(rec);
-      const double tolerance = 1e-9 * (std::abs(rec.samples.front().total()) + 1);
       s.stable = rec.exploded_at < 0 && s.energy_change <= tolerance;
       row.implicit.push_back(s);
     }

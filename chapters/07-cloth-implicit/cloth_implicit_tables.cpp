@@ -13,13 +13,16 @@ void print_stiffness_table(Report& report, const std::vector<StiffnessRow>& rows
                                           {"method at h", "method"},
                                           {"stable", "stable"},
                                           {"E(end) − E(0) [J]", "energy_change", "{:.3e}"},
+                                          {"max E − E(0) [J]", "peak_gain", "{:.3e}"},
+                                          {"largest rise in a step [J]", "largest_rise", "{:.3e}"},
+                                          {"steps it rose", "rising_steps"},
                                           {"iterations", "iterations"},
                                           {"failure", "failure"}});
   for (const auto& r : rows)
     for (const auto& s : r.implicit)
       table.row({r.stiffness, r.measured.estimate(), r.predicted, (1.0 / 30) / r.measured.estimate(),
-                 fmt::format("{} ({:.3g} s)", flag_name(s.method), h), s.stable, s.energy_change,
-                 s.iterations, s.failure});
+                 fmt::format("{} ({:.3g} s)", flag_name(s.method), h), s.stable, s.energy_change, s.peak_gain,
+                 s.largest_rise, s.rising_steps, s.iterations, s.failure});
   table.print();
 }
 
