@@ -14,6 +14,7 @@
 #include "cloth_flags.hpp"
 #include "cloth_kernels.hpp"
 #include "cloth_output.hpp"
+#include "cloth_page.hpp"
 #include "cloth_report.hpp"
 #include "cloth_spring_force.hpp"
 #include "cloth_tables.hpp"
@@ -82,7 +83,7 @@ void super_elastic(ChapterApp& app, const ClothScene& scene, const kit::Springs&
 
 // 6. "Vêtement = Tissu + collisions": the chosen run's contacts, its frames, meshes and animation.
 void garment(ChapterApp& app, const ClothScene& scene, const ClothRecording& rec,
-             const kit::ClothOutputOptions& output) {
+             const kit::ClothRunOptions& run, const kit::ClothOutputOptions& output) {
   app.report().say("contacts",
                    "6. Contacts: {tests} node tests, {contacts} nodes pushed out; the deepest a "
                    "node sat inside a collider after a step: {deepest:.2e} m.\n",
@@ -95,6 +96,7 @@ void garment(ChapterApp& app, const ClothScene& scene, const ClothRecording& rec
       "frames", "{frames} frames and OBJ meshes in {dir}; {movie}\n",
       {{"frames", long(made.frames.size())}, {"dir", output.dir.string()}, {"movie", made.note}});
   for (const auto& file : made.movies) app.summary()["figures"]["animation"].push_back(file.string());
+  kit::write_cloth_page(app, "Chapter 6", scene, rec, run, output.dir);
   if (app.options().show) app.report().print(kit::show_player(made.player) + "\n");
 }
 
@@ -138,7 +140,7 @@ int main(int argc, char** argv) {
       if (!springs) throw kit::NotImplemented("ex 6.2", "cloth_springs.hpp");
       const auto runs = explicit_loop(app, scene, *springs, kernels, run);
       super_elastic(app, scene, *springs, kernels, run, runs.at(run.integrator));
-      garment(app, scene, runs.at(run.integrator), kit::cloth_output_options(flags, app.options(), run));
+      garment(app, scene, runs.at(run.integrator), run, kit::cloth_output_options(flags, app.options(), run));
     });
     app.section("mesh dependence", {"mesh"}, [&] { mesh_dependence(app, kernels); });
   });

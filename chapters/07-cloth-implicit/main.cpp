@@ -10,6 +10,7 @@
 #include "cloth_implicit_estimate.hpp"
 #include "cloth_implicit_figures.hpp"
 #include "cloth_implicit_flags.hpp"
+#include "cloth_implicit_page.hpp"
 #include "cloth_implicit_tables.hpp"
 #include "cloth_implicit_wiring.hpp"
 #include "cloth_kernels.hpp"
@@ -107,6 +108,7 @@ void scene_run(ChapterApp& app, const ClothScene& scene, const kit::Springs& spr
       "frames", "{frames} frames and OBJ meshes in {dir}; {movie}\n",
       {{"frames", long(made.frames.size())}, {"dir", output.dir.string()}, {"movie", made.note}});
   for (const auto& file : made.movies) app.summary()["figures"]["animation"].push_back(file.string());
+  kit::write_implicit_scene_page(app, scene, springs, kernels, run, rec, output.dir);
 }
 }  // namespace
 

@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 
 #include <kit/app/chapter_app.hpp>
-
 #include <kit/rigid/rigid_renderer.hpp>
 
 #include "rigid_estimate.hpp"
@@ -16,6 +15,7 @@
 #include "rigid_flags.hpp"
 #include "rigid_kernels.hpp"
 #include "rigid_output.hpp"
+#include "rigid_page.hpp"
 #include "rigid_report.hpp"
 
 namespace {
@@ -95,7 +95,8 @@ void collisions(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernel
 
 // 6. The scene runs at --integrator and --dt: the body tumbling for --t-end, the box dropped tilted;
 //    their frames, OBJ meshes and animations.
-void scene_runs(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels, const RigidState& start) {
+void scene_runs(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernels,
+                const Integrators& integrators, const RigidState& start) {
   const auto box = kit::shape_named("box");
   const auto tumble =
       kit::run_free_rotation(kernels, s.integrator, s.shape, start, s.dt, s.t_end, 2, s.frames);
@@ -122,6 +123,7 @@ void scene_runs(ChapterApp& app, const RigidSetup& s, const RigidKernels& kernel
                       {"movie", made.note}});
     for (const auto& file : made.movies) app.summary()["figures"]["animation"].push_back(file.string());
   }
+  kit::write_rigid_pages(app, s, kernels, integrators, start, drop, kit::scene_drop_seconds);
 }
 }  // namespace
 
@@ -129,7 +131,6 @@ int main(int argc, char** argv) {
   kit::RigidFlags flags;
   ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR, "Chapter 8: rigid bodies");
   kit::add_rigid_flags(app, flags);
-  app.add_divergence_flag();
   return app.run(argc, argv, [&] {
     const RigidSetup setup = kit::rigid_setup(flags);
     const RigidState start = kit::spinning_state(setup.shape, kit::Vec3(0, 1, 0), setup.omega0);
@@ -144,6 +145,6 @@ int main(int argc, char** argv) {
     app.section("the cost of accuracy", {"trade-timing"},
                 [&] { cost_of_accuracy(app, setup, kernels, integrators, start); });
     app.section("collisions", {"drop", "drop_tilted"}, [&] { collisions(app, setup, kernels); });
-    app.section("the scene", [&] { scene_runs(app, setup, kernels, start); });
+    app.section("the scene", [&] { scene_runs(app, setup, kernels, integrators, start); });
   });
 }

@@ -50,6 +50,8 @@ Vec3 parse_omega(const std::string& text) {
 }  // namespace
 
 void add_rigid_flags(ChapterApp& app, RigidFlags& f) {
+  app.add_divergence_flag();
+  app.add_viewer_flag();
   app.add_choice("--body", f.body, "the free body: t-handle, box or cylinder (the drops use the box)",
                  shape_names());
   const auto names = rotation_integrator_names.flags();

@@ -22,7 +22,8 @@ struct RigidFlags {
   long trade_steps = 1'000'000;  ///< the most steps an integrator takes in the trade
 };
 
-/// Adds --body --integrator --dt --t-end --omega0 --restitution --friction --frames --trade-steps.
+/// Adds --body --integrator --dt --t-end --omega0 --restitution --friction --frames --trade-steps,
+/// and the common --fail-on-divergence and --no-viewer.
 void add_rigid_flags(ChapterApp& app, RigidFlags& flags);
 
 /// What the flags ask for, checked: the shape, the integrator, ω0 and the contact.

@@ -26,6 +26,7 @@ nlohmann::json vector_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 }  // namespace
 
 void add_cloth_flags(ChapterApp& app, ClothFlags& f, const std::vector<std::string>& more_integrators) {
+  app.add_viewer_flag();
   app.cli()
       .add_option("--scene", f.scene,
                   "scene: a name under chapters/06-cloth-explicit/scenes/ or a .toml path")

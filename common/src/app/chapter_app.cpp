@@ -200,6 +200,11 @@ void ChapterApp::add_divergence_flag() {
                  "exit with code 3 when a simulation diverged (it is reported either way)");
 }
 
+void ChapterApp::add_viewer_flag() {
+  app_->add_flag("--no-viewer", options_.no_viewer,
+                 "write no 3D page (NAME.html, played in a browser) beside the frames");
+}
+
 void ChapterApp::add_quick_flag(const std::string& sizes) {
   app_->add_flag(
       "--quick", options_.quick,

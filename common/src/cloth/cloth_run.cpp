@@ -1,6 +1,8 @@
 // A cloth scene run from start to end (cloth_run.hpp).
 #include <kit/cloth/cloth_run.hpp>
 
+#include <kit/base/stopwatch.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -25,6 +27,7 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
   ClothScene run_scene = scene;
   if (!options.strain_limit) run_scene.strain_limit.reset();
   ClothSystem cloth(run_scene, springs, kernels);
+  const Stopwatch clock;
   ClothRecording rec;
   // The step count is rounded to the nearest whole number of steps; samples and frames fall at
   // the step nearest their time.
@@ -82,6 +85,7 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
   }
   rec.work = cloth.work;
   if (implicit) rec.implicit = implicit->work;
+  rec.wall_seconds = clock.seconds();
   return rec;
 }
 

@@ -26,7 +26,8 @@ Box bounding_box(const std::vector<std::vector<Vec3>>& frames) {
   return box;
 }
 
-std::vector<std::uint16_t> quantise(const std::vector<std::vector<Vec3>>& frames, const Box& box, bool delta) {
+std::vector<std::uint16_t> quantise(const std::vector<std::vector<Vec3>>& frames, const Box& box,
+                                    bool delta) {
   std::vector<std::uint16_t> out;
   std::size_t total = 0;
   for (const auto& frame : frames) total += 3 * frame.size();
@@ -42,7 +43,8 @@ std::vector<std::uint16_t> quantise(const std::vector<std::vector<Vec3>>& frames
         q.push_back(static_cast<std::uint16_t>(std::lround(std::clamp(u, 0.0, 65535.0))));
       }
     for (std::size_t i = 0; i < q.size(); ++i)
-      out.push_back(delta && previous.size() == q.size() ? static_cast<std::uint16_t>(q[i] - previous[i]) : q[i]);
+      out.push_back(delta && previous.size() == q.size() ? static_cast<std::uint16_t>(q[i] - previous[i])
+                                                         : q[i]);
     previous = std::move(q);
   }
   return out;
@@ -72,7 +74,8 @@ std::string base64(std::string_view bytes) {
     out += {digits[v >> 18], digits[(v >> 12) & 63], digits[(v >> 6) & 63], digits[v & 63]};
   }
   if (const std::size_t left = bytes.size() - i; left > 0) {
-    const unsigned v = unsigned(std::uint8_t(bytes[i])) << 16 | (left == 2 ? unsigned(std::uint8_t(bytes[i + 1])) << 8 : 0u);
+    const unsigned v =
+        unsigned(std::uint8_t(bytes[i])) << 16 | (left == 2 ? unsigned(std::uint8_t(bytes[i + 1])) << 8 : 0u);
     out += {digits[v >> 18], digits[(v >> 12) & 63], left == 2 ? digits[(v >> 6) & 63] : '=', '='};
   }
   return out;

@@ -94,7 +94,10 @@ PaneJson pane_json(const PagePane& pane, long k) {
       for (const auto& frame : values)
         for (const double v : frame)
           bytes.push_back(std::isfinite(v) ? std::uint8_t(std::lround(255 * (v - lo) / (hi - lo))) : 0);
-      m["scalar"] = {{"name", mesh.scalar_name}, {"unit", mesh.scalar_unit}, {"min", lo}, {"max", hi},
+      m["scalar"] = {{"name", mesh.scalar_name},
+                     {"unit", mesh.scalar_unit},
+                     {"min", lo},
+                     {"max", hi},
                      {"values", page_blob(bytes)}};
     }
     objects.push_back(std::move(m));
@@ -125,7 +128,9 @@ PaneJson pane_json(const PagePane& pane, long k) {
                        {"radius", s.radius},
                        {"color", s.color}});
   if (pane.ground)
-    objects.push_back({{"type", "ground"}, {"y", pane.ground->y}, {"size", pane.ground->size},
+    objects.push_back({{"type", "ground"},
+                       {"y", pane.ground->y},
+                       {"size", pane.ground->size},
                        {"color", pane.ground->color}});
   return out;
 }
@@ -146,7 +151,8 @@ std::string script_safe(std::string text) {
 
 std::string escape_html(const std::string& text) {
   std::string out;
-  for (const char c : text) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+  for (const char c : text)
+    out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
   return out;
 }
 
@@ -206,7 +212,10 @@ PageWritten write_web_page(const WebPage& page, const fs::path& path, std::size_
   // Every k-th frame, the smallest k whose page fits the limit.
   std::string html;
   for (long k = 1;; ++k) {
-    json header = {{"format", 1}, {"title", page.title}, {"subtitle", page.subtitle}, {"fps", page.fps / k},
+    json header = {{"format", 1},
+                   {"title", page.title},
+                   {"subtitle", page.subtitle},
+                   {"fps", page.fps / k},
                    {"up", {0, 1, 0}}};
     json times = json::array();
     for (const double t : every_kth(page.times, k)) times.push_back(t);
@@ -218,9 +227,10 @@ PageWritten write_web_page(const WebPage& page, const fs::path& path, std::size_
       rounding = std::max(rounding, p.rounding);
       header["panes"].push_back(std::move(p.value));
     }
-    header["precision"] = fmt::format("positions stored in 16 bits over each object's box: rounded by at most "
-                                      "{:.2g} mm",
-                                      1e3 * rounding);
+    header["precision"] =
+        fmt::format("positions stored in 16 bits over each object's box: rounded by at most "
+                    "{:.2g} mm",
+                    1e3 * rounding);
     html = fmt::format(
         "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>{}</title>\n"
         "<style>{}</style>\n</head>\n<body>\n<script id=\"kit-data\" type=\"application/json\">{}</script>\n"
@@ -230,8 +240,9 @@ PageWritten write_web_page(const WebPage& page, const fs::path& path, std::size_
     written.position_error = rounding;
     if (html.size() <= limit || written.frames <= 2) {
       if (k > 1)
-        written.note = fmt::format(", 1 in {} of the run's {}: all of them would pass the page limit of {:.0f} MB",
-                                   k, written.frames_given, double(limit) / 1e6);
+        written.note =
+            fmt::format(", 1 in {} of the run's {}: all of them would pass the page limit of {:.0f} MB", k,
+                        written.frames_given, double(limit) / 1e6);
       break;
     }
   }

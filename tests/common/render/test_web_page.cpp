@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include <stb_image.h>
 #include <kit_catch.hpp>
 #include <nlohmann/json.hpp>
-#include <stb_image.h>
 
 #include <kit/render/page_blob.hpp>
 #include <kit/render/web_page.hpp>

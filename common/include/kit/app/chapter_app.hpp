@@ -46,6 +46,7 @@ struct CommonOptions {
   std::string summary_file;                        ///< --summary: the JSON summary to a file too
   bool fail_on_divergence = false;                 ///< --fail-on-divergence: exit 3 if a run diverged
   bool quick = false;                              ///< --quick: the lecture's experiments at reduced sizes
+  bool no_viewer = false;                          ///< --no-viewer: no 3D page beside the frames
 };
 
 /// One chapter binary: its flags, its text and JSON report, and its figures.
@@ -116,6 +117,8 @@ class ChapterApp {
   /// flags given, so a quick run shows the same behaviour in a fraction of the time; the summary
   /// records "quick": true, and the figures hold fewer points.
   void add_quick_flag(const std::string& sizes);
+  /// --no-viewer (chapters that write frames): leave out the 3D page (write_page, page_output.hpp).
+  void add_viewer_flag();
   /// Records that a run diverged: a result, listed under "divergences" in the summary. The
   /// chapter still finishes and exits 0, or 3 under --fail-on-divergence.
   void diverged(const std::string& run, const std::string& what);

@@ -43,7 +43,8 @@ struct ClothRecording {
   double peak_strain = 0;   ///< largest structural stretch measured (every 8 steps)
   double deepest = 0;       ///< deepest a node ever sat inside a collider after a step [m]
   ClothWork work;
-  ImplicitWork implicit;  ///< what the implicit steps computed (chapter 7)
+  ImplicitWork implicit;    ///< what the implicit steps computed (chapter 7)
+  double wall_seconds = 0;  ///< the run's wall time on this machine [s] (shown, never tested)
 };
 
 /// A cloth has exploded once a coordinate is not finite or a structural spring is stretched

@@ -19,11 +19,11 @@ namespace kit {
 /// A triangle mesh whose vertices move: the cloth, a rigid body's faces, chapter 9's sheet.
 struct PageMesh {
   std::string name;
-  std::string color = "#c8553d";                    ///< CSS colour
+  std::string color = "#c8553d";                        ///< CSS colour
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< vertex indices, counter-clockwise outside
-  std::vector<std::vector<Vec3>> frames;             ///< positions per frame [m], all the same size
-  std::vector<int> pins;                             ///< vertices drawn as pins
-  bool flat = false;                                 ///< flat shading (boxes) rather than smooth
+  std::vector<std::vector<Vec3>> frames;                ///< positions per frame [m], all the same size
+  std::vector<int> pins;                                ///< vertices drawn as pins
+  bool flat = false;                                    ///< flat shading (boxes) rather than smooth
   /// A value per vertex and frame drawn as colour (chapter 9's strain); empty: none.
   std::string scalar_name, scalar_unit;
   std::vector<std::vector<double>> scalar;
@@ -45,8 +45,8 @@ struct PageSphere {
 };
 
 struct PageGround {
-  double y = 0;       ///< height of the plane [m]
-  double size = 10;   ///< side of the drawn square [m]
+  double y = 0;      ///< height of the plane [m]
+  double size = 10;  ///< side of the drawn square [m]
   std::string color = "#e4e4e4";
 };
 
@@ -74,9 +74,9 @@ struct PagePane {
 
 struct WebPage {
   std::string title, subtitle;
-  double fps = 30;                    ///< playback rate at 1× [frames/s]
-  std::vector<double> times;          ///< the clock: simulated time of each page frame [s]
-  std::vector<PagePane> panes;        ///< 1 to 4, side by side
+  double fps = 30;              ///< playback rate at 1× [frames/s]
+  std::vector<double> times;    ///< the clock: simulated time of each page frame [s]
+  std::vector<PagePane> panes;  ///< 1 to 4, side by side
 };
 
 /// The largest page a run writes by default [bytes]: 120 frames of an 81 × 81 sheet take about

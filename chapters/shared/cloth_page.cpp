@@ -1,0 +1,92 @@
+// A cloth run as a pane of a 3D page (cloth_page.hpp).
+#include "cloth_page.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace kit {
+
+std::vector<double> cloth_page_times(const ClothRunOptions& run) {
+  std::vector<double> times;
+  for (int k = 0; k <= run.frames; ++k) times.push_back(k * run.t_end / std::max(run.frames, 1));
+  return times;
+}
+
+WebPage cloth_page(const std::string& title, const ClothScene& scene, const ClothRunOptions& run,
+                   std::vector<PagePane> panes) {
+  WebPage page;
+  page.title = title;
+  page.subtitle = scene.description;
+  page.fps = run.frames > 0 ? run.frames / run.t_end : 30;
+  page.times = cloth_page_times(run);
+  page.panes = std::move(panes);
+  return page;
+}
+
+std::string cloth_run_label(const ClothRunOptions& run) {
+  return fmt::format("{}, Δt = {:.3g} s",
+                     run.implicit ? display_name(*run.implicit) : display_name(run.integrator), run.dt);
+}
+
+PageWritten write_cloth_page(ChapterApp& app, const std::string& chapter, const ClothScene& scene,
+                             const ClothRecording& rec, const ClothRunOptions& run,
+                             const std::filesystem::path& out_dir) {
+  return write_page(app,
+                    cloth_page(chapter + ": '" + scene.name + "'", scene, run,
+                               {cloth_pane(scene, rec, run, cloth_run_label(run))}),
+                    out_dir / "cloth.html");
+}
+
+PagePane cloth_pane(const ClothScene& scene, const ClothRecording& rec, const ClothRunOptions& run,
+                    const std::string& label) {
+  const double seconds = rec.wall_seconds;
+  PagePane pane;
+  pane.label = label;
+  if (seconds > 0 && rec.steps > 0) {
+    const double simulated = rec.exploded_at >= 0 ? rec.exploded_at : run.t_end;  // [s]
+    pane.cost =
+        fmt::format("{:.3g} s of computing per simulated second", seconds / std::max(simulated, 1e-9));
+  }
+  if (rec.exploded_at >= 0)
+    pane.ended =
+        fmt::format("{} at t = {:.4g} s", rec.failure.empty() ? "exploded" : "stopped", rec.exploded_at);
+  pane.facts = {{"sheet", fmt::format("{} × {} nodes", scene.grid.nx, scene.grid.ny)},
+                {"step", fmt::format("{:.4g} s", run.dt)},
+                {"steps taken", fmt::format("{}", rec.steps)}};
+  PageMesh mesh;
+  mesh.name = "cloth";
+  const ClothGrid& grid = scene.grid;
+  for (int j = 0; j + 1 < grid.ny; ++j)  // the OBJ writer's triangles (obj_mesh.cpp)
+    for (int i = 0; i + 1 < grid.nx; ++i) {
+      const auto a = std::uint32_t(grid.index(i, j)), b = a + 1, c = a + std::uint32_t(grid.nx) + 1,
+                 d = a + std::uint32_t(grid.nx);
+      mesh.triangles.push_back({a, b, c}), mesh.triangles.push_back({a, c, d});
+    }
+  for (const Pin& pin : scene.pins) mesh.pins.push_back(int(pinned_node(grid, pin)));
+  const std::vector<double> times = cloth_page_times(run);
+  PageReadout energy{"energy E", "J", {}}, change{"E − E(0)", "J", {}}, strain{"largest stretch", "%", {}, 3};
+  for (std::size_t k = 0; k < rec.frames.size(); ++k) {
+    const NodeArray& x = rec.frames[k];
+    std::vector<Vec3> frame(std::size_t(x.rows()));
+    for (long n = 0; n < x.rows(); ++n) frame[std::size_t(n)] = x.row(n).transpose();
+    mesh.frames.push_back(std::move(frame));
+    // The sample nearest the frame's time (samples fall at steps, frames at k·t_end/frames).
+    const auto nearest = std::min_element(
+        rec.samples.begin(), rec.samples.end(),
+        [&](const auto& a, const auto& b) { return std::abs(a.t - times[k]) < std::abs(b.t - times[k]); });
+    const bool close = nearest != rec.samples.end() &&
+                       std::abs(nearest->t - times[k]) <= 0.5 * run.t_end / std::max(run.samples, 1) + run.dt;
+    energy.values.push_back(close ? nearest->total() : NAN);
+    change.values.push_back(close ? nearest->total() - rec.samples.front().total() : NAN);
+    strain.values.push_back(close ? 100 * nearest->strain : NAN);
+  }
+  pane.readouts = {energy, change, strain};
+  pane.meshes.push_back(std::move(mesh));
+  for (const SphereCollider& s : scene.spheres) pane.spheres.push_back({"collider", s.center, s.radius});
+  if (scene.ground) pane.ground = PageGround{scene.ground->height, 4 * std::max(grid.width, grid.height)};
+  return pane;
+}
+
+}  // namespace kit
