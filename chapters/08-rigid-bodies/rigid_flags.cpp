@@ -50,8 +50,6 @@ Vec3 parse_omega(const std::string& text) {
 }  // namespace
 
 void add_rigid_flags(ChapterApp& app, RigidFlags& f) {
-  app.add_divergence_flag();
-  app.add_viewer_flag();
   app.add_choice("--body", f.body, "the free body: t-handle, box or cylinder (the drops use the box)",
                  shape_names());
   const auto names = rotation_integrator_names.flags();
@@ -69,6 +67,8 @@ void add_rigid_flags(ChapterApp& app, RigidFlags& f) {
   app.add_count("--trade-steps", f.trade_steps,
                 "the most steps of an integrator in the cost-of-accuracy runs", 100,
                 10'000'000);  // 1e7: about 30 s of the six integrators
+  app.add_divergence_flag();
+  app.add_viewer_flag();
 }
 
 RigidSetup rigid_setup(const RigidFlags& flags) {

@@ -25,6 +25,9 @@ void add_continuum_flags(ChapterApp& app, ContinuumFlags& f) {
                between(0, 0.1));
   app.add_real("--t-end", f.t_end, "how long the plate spins [s]", positive(100));
   app.add_count("--frames", f.frames, "OBJ meshes of the spinning plate (0: none)", 0, 2000);
+  app.add_divergence_flag();
+  app.add_quick_flag("the cost of accuracy's cantilevers to 4 elements high, not 8");
+  app.add_viewer_flag();
 }
 
 ContinuumSetup continuum_setup(const ContinuumFlags& flags) {

@@ -22,7 +22,7 @@ struct ContinuumFlags {
   long frames = 24;  ///< OBJ meshes of the plate
 };
 
-/// Adds the flags above.
+/// Adds the flags above, and the common --fail-on-divergence, --quick and --no-viewer.
 void add_continuum_flags(ChapterApp& app, ContinuumFlags& flags);
 
 /// What the flags ask for, checked.

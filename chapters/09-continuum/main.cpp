@@ -14,6 +14,7 @@
 #include "continuum_report.hpp"
 #include "fem_kernels.hpp"
 #include "fem_output.hpp"
+#include "fem_page.hpp"
 
 namespace {
 using kit::ChapterApp, kit::ContinuumKernels, kit::ContinuumSetup, kit::FemModel, kit::TipSolver;
@@ -113,26 +114,14 @@ void cost_of_accuracy(ChapterApp& app, const ContinuumSetup& s, const ContinuumK
 
 // 6. The scene: the plate by --model for --t-end, as --frames OBJ meshes (the first at t = 0).
 void scene(ChapterApp& app, const ContinuumSetup& s, const ContinuumKernels& kernels) {
-  if (app.options().no_plot || s.frames == 0) return;
-  const auto dir = std::filesystem::path(app.options().out_dir) / "plate_meshes";
-  std::filesystem::create_directories(dir);
-  const auto write = [&](const kit::FemBody& body, int frame, double) {
-    kit::write_fem_obj(dir / fmt::format("plate-{:04d}.obj", frame), body);
-  };
-  const auto run = kit::spin_plate(s.material, s.model, s.integrator, s.resolution, s.mesh, s.dt, s.t_end,
-                                   kernels, int(s.frames) - 1, write);
-  app.report().say(
-      "scene", "\n6. {frames} OBJ meshes of the {model} plate in {dir}.\n",
-      {{"frames", long(run.samples.size())}, {"model", kit::model_name(s.model)}, {"dir", dir.string()}});
+  kit::plate_scene(app, s, kernels);
 }
 }  // namespace
 
 int main(int argc, char** argv) {
   kit::ContinuumFlags flags;
   ChapterApp app(KIT_CHAPTER_NAME, KIT_DEFAULT_FIGURE_DIR, "Chapter 9: continuum mechanics");
-  kit::add_continuum_flags(app, flags);
-  app.add_divergence_flag();
-  app.add_quick_flag("the cost of accuracy's cantilevers to 4 elements high, not 8");
+  kit::add_continuum_flags(app, flags);  // --fail-on-divergence, --quick and --no-viewer too
   return app.run(argc, argv, [&] {
     const ContinuumSetup setup = kit::continuum_setup(flags);
     kit::announce_run(app.report(), "runs", "Chapter 9", kit::estimate_continuum_runs(setup),
