@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <kit/app/chapter_app.hpp>
+#include <kit/app/page_output.hpp>
 #include <kit/base/measure.hpp>
 #include <kit/render/animation.hpp>
 #include <kit/sprites/sprite_estimate.hpp>
@@ -78,7 +79,7 @@ kit::SpriteRecording lives_and_dies(kit::ChapterApp& app, const kit::SpriteScene
 }
 
 // 4. "Plaque une texture transparente animée": the frames as a contact sheet and an animation.
-void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
+void animated_texture(kit::ChapterApp& app, const kit::SpriteScene& scene, const kit::SpriteRecording& rec,
                       const kit::SpriteRunOptions& run) {
   const fs::path out = app.options().out_dir;
   kit::say_sprite_frames(app.report(), rec, run);
@@ -97,6 +98,7 @@ void animated_texture(kit::ChapterApp& app, const kit::SpriteRecording& rec,
       "animation", "{files}\nPlay the frames: gnuplot -persist {player}\n",
       {{"files", made->movie.files.empty() ? made->movie.note : movie}, {"player", made->player.string()}});
   if (app.options().show) app.report().print(kit::show_player(made->player) + "\n");
+  kit::write_page(app, kit::sprite_page(scene, rec, run), out / "sprites.html");
 }
 
 // 5. "On peut afficher la trajectoire": a sample of paths, coloured by age.
@@ -117,6 +119,7 @@ int main(int argc, char** argv) {
     const bool render = !app.options().no_plot;
     const fs::path frames = render ? fs::path(app.options().out_dir) / "frames" : fs::path();
     auto run = kit::run_options(flags, scene, frames);
+    run.page_particles = render && !app.options().no_viewer ? 2500 : 0;  // the 3D page's, a frame
     kit::announce_run(app.report(), "animation", "The animation", kit::estimate_sprite_run(scene, run),
                       fmt::format("--frames {}, --fps {}, --max-particles {}, --width {}, --height {}",
                                   run.frames, run.fps, run.max_particles, run.width, run.height),
@@ -127,7 +130,7 @@ int main(int argc, char** argv) {
     run.over = render ? kit::student_over(app.report()) : nullptr;
     app.section("the scene", [&] {
       const kit::SpriteRecording rec = lives_and_dies(app, scene, run);
-      if (render) animated_texture(app, rec, run);
+      if (render) animated_texture(app, scene, rec, run);
       trajectories(app, rec, scene);
     });
   });

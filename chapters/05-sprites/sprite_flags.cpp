@@ -38,6 +38,7 @@ void add_sprite_flags(ChapterApp& app, SpriteFlags& f) {
   app.add_count("--height", f.height, "frame height [px]", 16, 4320);
   app.add_count("--max-particles", f.max_particles, "particles alive at most (default: the scene's)", 1,
                 max_particles_bound);
+  app.add_viewer_flag();
 }
 
 SpriteScene load_scene_flag(const SpriteFlags& flags, const std::filesystem::path& scenes_dir) {

@@ -343,7 +343,8 @@
 
     const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
     renderer.setPixelRatio(window.devicePixelRatio || 1);
-    renderer.setClearColor(0xfafbfc, 1);
+    // The scene's own background when it has one (chapter 5's sprites glow on a dark sky).
+    renderer.setClearColor(header.background ? new THREE.Color(header.background) : 0xfafbfc, 1);
     view.appendChild(renderer.domElement);
     view.appendChild(ended);
 
@@ -611,6 +612,12 @@
     ui.timeShown.textContent = formatTime(player.header.times[k]);
     player.panes.forEach((pane) => showPaneFrame(pane, k, player.header.times));
     renderAll(player);
+    // Where each pane's canvas lies on the page [CSS px], so that a test of the screenshot looks
+    // inside the 3D view and not at the text around it.
+    player.panes.forEach((pane) => {
+      const r = pane.renderer.domElement.getBoundingClientRect();
+      pane.renderer.domElement.dataset.kitRect = [r.left, r.top, r.width, r.height].map(Math.round).join(',');
+    });
     document.body.dataset.kitReady = String(k);
   }
 

@@ -4,7 +4,8 @@ fixture that drew FIGURES_DIR/NN-name and wrote its summary beside it, NN-name.s
 writes byte-identical files and the same summary. Timings are the one exception, and they are
 named so: a file whose name holds "timing"; a summary field with "timing" in its name or a unit
 of time (seconds, ms, us, ns) as one of its words ("seconds", "scatter_ms", "ns_per_step"); a
-run's "estimate". PDFs count too: both runs set SOURCE_DATE_EPOCH, which fixes the creation date
+run's "estimate"; a 3D page's "cost" of each pane (its header's "cost":"… s of computing per
+simulated second"), and so the page's size in the summary (pages.NAME.bytes). PDFs count too: both runs set SOURCE_DATE_EPOCH, which fixes the creation date
 cairo would take from the clock (figure_file.cpp). The first run was made beside the rest of the
 suite, the second here: a busy machine changes nothing but timings.
 
@@ -13,6 +14,7 @@ Usage: reproducible_outputs.py BIN_DIR WORK_DIR FIGURES_DIR EPOCH
 import json
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -26,12 +28,16 @@ def is_timing_key(key):
     return key == "estimate" or "timing" in key or bool({"seconds", "ms", "us", "ns"} & set(key.split("_")))
 
 
-def without_timings(value, out_dir):
+PAGE_COST = re.compile(rb'"cost":"[^"]*"')
+
+
+def without_timings(value, out_dir, parent=""):
     """The summary with timing fields dropped and the run's own folder written as OUT."""
     if isinstance(value, dict):
-        return {k: without_timings(v, out_dir) for k, v in value.items() if not is_timing_key(k)}
+        return {k: without_timings(v, out_dir, k) for k, v in value.items()
+                if not is_timing_key(k) and not (k == "bytes" and parent != "" and "html" in str(value.get("path", "")))}
     if isinstance(value, list):
-        return [without_timings(v, out_dir) for v in value]
+        return [without_timings(v, out_dir, parent) for v in value]
     if isinstance(value, str):
         return value.replace(str(out_dir), "OUT")
     return value
@@ -39,6 +45,9 @@ def without_timings(value, out_dir):
 
 def outputs(out_dir, summary_text):
     files = {str(p.relative_to(out_dir)): p.read_bytes() for p in sorted(out_dir.rglob("*")) if p.is_file()}
+    for name in files:
+        if name.endswith(".html"):  # a pane's cost is a timing
+            files[name] = PAGE_COST.sub(b'"cost":""', files[name])
     return without_timings(json.loads(summary_text), out_dir), files
 
 

@@ -220,6 +220,7 @@ PageWritten write_web_page(const WebPage& page, const fs::path& path, std::size_
     json times = json::array();
     for (const double t : every_kth(page.times, k)) times.push_back(t);
     header["times"] = times;
+    if (!page.background.empty()) header["background"] = page.background;
     header["panes"] = json::array();
     double rounding = 0;
     for (const PagePane& pane : page.panes) {

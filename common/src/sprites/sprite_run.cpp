@@ -44,6 +44,34 @@ double expected_alive(const SpriteScene& scene, const SpriteRunOptions& options)
   return std::min(alive, double(options.max_particles));
 }
 
+namespace {
+
+// Linear [0, 1] to an sRGB byte, as a browser shows colours.
+std::uint8_t srgb_byte(float linear) {
+  const double c = std::clamp(double(linear), 0.0, 1.0);
+  const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+  return std::uint8_t(std::lround(255 * s));
+}
+
+// Every k-th alive particle, k the smallest that keeps at most the frame's share.
+void keep_for_page(const Particles& ps, const SpriteRunOptions& options, PagePoints& page) {
+  const long share =
+      std::max(1L, std::min(options.page_particles, page_particle_frames / std::max(1L, options.frames)));
+  const std::size_t every =
+      std::max<std::size_t>(1, (ps.size() + std::size_t(share) - 1) / std::size_t(share));
+  std::vector<Vec3> positions;
+  std::vector<std::array<std::uint8_t, 4>> colours;
+  for (std::size_t i = 0; i < ps.size(); i += every) {
+    positions.emplace_back(ps.x[i], ps.y[i], ps.z[i]);
+    colours.push_back({srgb_byte(ps.r[i]), srgb_byte(ps.g[i]), srgb_byte(ps.b[i]),
+                       std::uint8_t(std::lround(255 * std::clamp(double(ps.alpha[i]), 0.0, 1.0)))});
+  }
+  page.frames.push_back(std::move(positions));
+  page.rgba.push_back(std::move(colours));
+}
+
+}  // namespace
+
 SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOptions& options,
                                  SpriteKernels kernels) {
   SpriteRecording rec;
@@ -84,6 +112,7 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
       path.x.push_back(ps.x[i]), path.y.push_back(ps.y[i]), path.z.push_back(ps.z[i]);
       path.age.push_back(ps.age[i]);
     }
+    if (options.page_particles > 0 && f >= 0) keep_for_page(ps, options, rec.page);
     if (render && f >= 0) {
       const RenderStats s = renderer->render(ps, image);
       rec.render.sprites_drawn += s.sprites_drawn, rec.render.sprites_culled += s.sprites_culled;
@@ -97,6 +126,38 @@ SpriteRecording run_sprite_scene(const SpriteScene& scene, const SpriteRunOption
   rec.work = system.work();
   for (auto& [id, path] : paths) rec.paths.push_back(std::move(path));
   return rec;
+}
+
+WebPage sprite_page(const SpriteScene& scene, const SpriteRecording& rec, const SpriteRunOptions& options) {
+  WebPage page;
+  page.title = fmt::format("Chapter 5: '{}'", scene.name);
+  page.subtitle =
+      fmt::format("{} frames at {:g} per second after {} warm-up frames; every k-th particle shown",
+                  options.frames, options.fps, options.warmup_frames);
+  page.fps = options.fps;
+  page.background = fmt::format("#{:02x}{:02x}{:02x}", srgb_byte(float(scene.background[0])),
+                                srgb_byte(float(scene.background[1])), srgb_byte(float(scene.background[2])));
+  PagePane pane;
+  pane.label = fmt::format("{}, Δt = 1/{:g} s", display_name(options.integrator), options.fps);
+  pane.facts = {{"emitters", fmt::format("{}", scene.emitters.size())},
+                {"most alive", fmt::format("{}", options.max_particles)}};
+  pane.points.push_back(rec.page);
+  pane.points.back().name = "particles";
+  pane.points.back().size = scene.emitters.empty() ? 0.1 : scene.emitters.front().size.mean;
+  PageReadout alive{"alive", "", {}, 6}, emitted{"emitted this frame", "", {}, 6}, shown{"shown", "", {}, 6};
+  for (std::size_t f = 0; f < rec.page.frames.size(); ++f) {
+    const FrameCounts& counts = rec.frames[std::size_t(rec.warmup_frames) + f];
+    // A frame is drawn after its update; the warm-up's frames came first.
+    page.times.push_back(double(rec.warmup_frames + long(f) + 1) / options.fps);
+    alive.values.push_back(double(counts.alive));
+    emitted.values.push_back(double(counts.emitted));
+    shown.values.push_back(double(rec.page.frames[f].size()));
+  }
+  pane.readouts = {alive, emitted, shown};
+  if (rec.diverged_at >= 0)
+    pane.ended = fmt::format("a position became infinite at frame {}", rec.diverged_at);
+  page.panes.push_back(std::move(pane));
+  return page;
 }
 
 std::optional<AnimationOutputs> write_animation(const SpriteRecording& rec, const SpriteRunOptions& options,

@@ -77,6 +77,7 @@ struct WebPage {
   double fps = 30;              ///< playback rate at 1× [frames/s]
   std::vector<double> times;    ///< the clock: simulated time of each page frame [s]
   std::vector<PagePane> panes;  ///< 1 to 4, side by side
+  std::string background;       ///< CSS colour of the 3D views; empty: the player's light grey
 };
 
 /// The largest page a run writes by default [bytes]: 120 frames of an 81 × 81 sheet take about

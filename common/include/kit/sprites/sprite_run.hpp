@@ -12,6 +12,7 @@
 #include <kit/render/animation.hpp>
 #include <kit/render/frame_writer.hpp>
 #include <kit/render/image.hpp>
+#include <kit/render/web_page.hpp>
 #include <kit/sprites/sprite_renderer.hpp>
 #include <kit/sprites/sprite_system.hpp>
 
@@ -30,7 +31,12 @@ struct SpriteRunOptions {
   int paths = 24;                   ///< particles whose paths are recorded
   int sheet_frames = 12;            ///< frames kept for the contact sheet, evenly spaced
   double texture_bytes = 0;         ///< what the emitters' textures take, for the estimate [B]
+  /// Particles kept a rendered frame for the 3D page (every k-th alive one), at most
+  /// page_particle_frames / frames of them; 0: no page.
+  long page_particles = 0;
 };
+/// Particle-frames the 3D page keeps in all: 2e6 take 56 MB while the run lasts.
+inline constexpr long page_particle_frames = 2'000'000;
 
 /// One particle's recorded path, a point per frame it was alive (after that frame's update).
 struct ParticlePath {
@@ -49,6 +55,7 @@ struct SpriteRecording {
   long warmup_frames = 0;  ///< the first frames, run but not rendered
   long peak_alive = 0;
   long diverged_at = -1;  ///< first frame with a non-finite position, or −1
+  PagePoints page;        ///< the particles kept for the 3D page, rendered frames only
 };
 
 /// Mean particles each emitter adds a frame at steady state: its rate, or for a burst emitter,
@@ -60,6 +67,10 @@ double expected_alive(const SpriteScene& scene, const SpriteRunOptions& options)
 /// What a recording's frames become in `out` (finish_animation): contact_sheet.png (the kept
 /// frames, 4 a row), animation.mp4 and .gif (ffmpeg, when installed) and play.gp (a gnuplot
 /// player). Nothing when no frame was rendered (a run that diverged before its first frame).
+/// The run as a 3D page: its kept particles as points with their colour and opacity, and at each
+/// frame the particles alive, emitted and shown.
+WebPage sprite_page(const SpriteScene& scene, const SpriteRecording& rec, const SpriteRunOptions& options);
+
 std::optional<AnimationOutputs> write_animation(const SpriteRecording& recording,
                                                 const SpriteRunOptions& options,
                                                 const std::filesystem::path& out);
