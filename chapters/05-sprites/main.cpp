@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     const bool render = !app.options().no_plot;
     const fs::path frames = render ? fs::path(app.options().out_dir) / "frames" : fs::path();
     auto run = kit::run_options(flags, scene, frames);
-    run.page_particles = render && !app.options().no_viewer ? 2500 : 0;  // the 3D page's, a frame
+    run.page_particles = render && !app.options().no_viewer ? 1500 : 0;  // the 3D page's, a frame
     kit::announce_run(app.report(), "animation", "The animation", kit::estimate_sprite_run(scene, run),
                       fmt::format("--frames {}, --fps {}, --max-particles {}, --width {}, --height {}",
                                   run.frames, run.fps, run.max_particles, run.width, run.height),

@@ -81,8 +81,8 @@ void super_elastic(ChapterApp& app, const ClothScene& scene, const kit::Springs&
   app.figure(kit::cloth_strain_figure(c.free, c.limited, c.max_strain, scene.name));
 }
 
-// 6. "Vêtement = Tissu + collisions": the chosen run's contacts, its frames, meshes and animation.
-void garment(ChapterApp& app, const ClothScene& scene, const ClothRecording& rec,
+// 6. "Vêtement = Tissu + collisions": the chosen run's contacts, frames, meshes, animation and 3D pages.
+void garment(ChapterApp& app, const ClothScene& scene, ClothKernels kernels, const ClothRecording& rec,
              const kit::ClothRunOptions& run, const kit::ClothOutputOptions& output) {
   app.report().say("contacts",
                    "6. Contacts: {tests} node tests, {contacts} nodes pushed out; the deepest a "
@@ -97,6 +97,7 @@ void garment(ChapterApp& app, const ClothScene& scene, const ClothRecording& rec
       {{"frames", long(made.frames.size())}, {"dir", output.dir.string()}, {"movie", made.note}});
   for (const auto& file : made.movies) app.summary()["figures"]["animation"].push_back(file.string());
   kit::write_cloth_page(app, "Chapter 6", scene, rec, run, output.dir);
+  kit::write_stability_page(app, scene, kernels, run, output.dir);
   if (app.options().show) app.report().print(kit::show_player(made.player) + "\n");
 }
 
@@ -140,7 +141,8 @@ int main(int argc, char** argv) {
       if (!springs) throw kit::NotImplemented("ex 6.2", "cloth_springs.hpp");
       const auto runs = explicit_loop(app, scene, *springs, kernels, run);
       super_elastic(app, scene, *springs, kernels, run, runs.at(run.integrator));
-      garment(app, scene, runs.at(run.integrator), run, kit::cloth_output_options(flags, app.options(), run));
+      garment(app, scene, kernels, runs.at(run.integrator), run,
+              kit::cloth_output_options(flags, app.options(), run));
     });
     app.section("mesh dependence", {"mesh"}, [&] { mesh_dependence(app, kernels); });
   });

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <kit/cloth/cloth_stability.hpp>
+
 namespace kit {
 
 std::vector<double> cloth_page_times(const ClothRunOptions& run) {
@@ -37,6 +39,35 @@ PageWritten write_cloth_page(ChapterApp& app, const std::string& chapter, const 
                     cloth_page(chapter + ": '" + scene.name + "'", scene, run,
                                {cloth_pane(scene, rec, run, cloth_run_label(run))}),
                     out_dir / "cloth.html");
+}
+
+PageWritten write_stability_page(ChapterApp& app, const ClothScene& scene, ClothKernels kernels,
+                                 const ClothRunOptions& run, const std::filesystem::path& out_dir) {
+  if (app.options().no_viewer || app.options().no_plot) return {};  // and no runs either
+  // The prediction 2/ω_max is for undamped springs (cloth_stability.hpp): the scene's springs
+  // without their damping, and without the strain limit, which would hold a growing mode back.
+  ClothScene undamped = scene;
+  for (auto* family : {&undamped.springs.structural, &undamped.springs.shear, &undamped.springs.bend})
+    if (*family) (*family)->damping = 0;
+  const Springs bare = kernels.build_springs(undamped.grid, undamped.springs);
+  const ClothSystem cloth(undamped, bare, kernels);
+  const double limit = predicted_dt_max(ClothIntegrator::symplectic_euler,
+                                        omega_max(bare, cloth.masses(), cloth.x, cloth.pins()).omega);  // [s]
+  std::vector<PagePane> panes;
+  for (const double factor : {0.9, 1.1}) {
+    ClothRunOptions near = run;
+    near.integrator = ClothIntegrator::symplectic_euler, near.implicit.reset();
+    near.dt = factor * limit, near.strain_limit = false;
+    const ClothRecording rec = run_cloth(undamped, bare, kernels, near);
+    panes.push_back(
+        cloth_pane(undamped, rec, near,
+                   fmt::format("symplectic Euler, Δt = {:g} × 2/ω_max = {:.3g} s", factor, near.dt)));
+  }
+  WebPage page =
+      cloth_page(fmt::format("Chapter 6: '{}' just below and just above its stable step", scene.name), scene,
+                 run, std::move(panes));
+  page.subtitle = fmt::format("its springs undamped, no strain limit; 2/ω_max = {:.4g} s", limit);
+  return write_page(app, page, out_dir / "cloth-stability.html");
 }
 
 PagePane cloth_pane(const ClothScene& scene, const ClothRecording& rec, const ClothRunOptions& run,

@@ -29,6 +29,12 @@ WebPage cloth_page(const std::string& title, const ClothScene& scene, const Clot
 }  // namespace kit
 
 namespace kit {
+/// out_dir/cloth-stability.html (chapter 6): the scene under symplectic Euler just below and just
+/// above its stable step 2/ω_max (0.9 and 1.1 times it; the springs undamped, no strain limit),
+/// side by side on one clock: the one holds, the other explodes.
+PageWritten write_stability_page(ChapterApp& app, const ClothScene& scene, ClothKernels kernels,
+                                 const ClothRunOptions& run, const std::filesystem::path& out_dir);
+
 /// out_dir/cloth.html: the run alone, titled "<chapter>: '<scene>'" (write_page).
 PageWritten write_cloth_page(ChapterApp& app, const std::string& chapter, const ClothScene& scene,
                              const ClothRecording& rec, const ClothRunOptions& run,
