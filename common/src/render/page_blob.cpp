@@ -1,6 +1,7 @@
 // How a web page stores a run's numbers (page_blob.hpp).
 #include <kit/render/page_blob.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
