@@ -39,5 +39,15 @@ check "deps --for an unknown command exits 2" 2 "$(exit_of ./kit deps --for frob
 message=$(./kit deps --for frobnicate --list 2>&1 >/dev/null)
 [[ "$message" == *"--for 'frobnicate'"*"run figures build test"* ]] || { echo "FAILED: deps --for's refusal does not name the value and the choices: $message"; failures=$((failures + 1)); }
 
+# view: the chapters with 3D pages are 5 to 9; anything else is refused before anything is built.
+check "view without a chapter exits 2" 2 "$(exit_of ./kit view)"
+check "view of an unknown chapter exits 2" 2 "$(exit_of ./kit view 42)"
+message=$(./kit view 03 2>&1 >/dev/null)
+check "view of a chapter without 3D pages exits 2" 2 "$(exit_of ./kit view 03)"
+[[ "$message" == *"03-rk2"*"05 to 09"* ]] || { echo "FAILED: view 03's refusal does not say which chapters have pages: $message"; failures=$((failures + 1)); }
+check "view takes at most a chapter and a page" 2 "$(exit_of ./kit view 07 cloth extra)"
+check "run installs three.js (the pages)" 1 "$(./kit deps --for run --list | grep -cx libjs-three)"
+check "run needs no browser" 0 "$(./kit deps --for run --list | grep -c chromium)"
+
 echo "$failures failed"
 exit $((failures > 0))
