@@ -114,6 +114,12 @@ PagePane cloth_pane(const ClothScene& scene, const ClothRecording& rec, const Cl
     strain.values.push_back(close ? 100 * nearest->strain : NAN);
   }
   pane.readouts = {energy, change, strain};
+  if (!scene.spheres.empty() || scene.ground) {  // the contacts made since the frame before
+    PageReadout contacts{"contacts since the last frame", "", {}, 6};
+    for (std::size_t k = 0; k < rec.frame_contacts.size(); ++k)
+      contacts.values.push_back(double(rec.frame_contacts[k] - (k > 0 ? rec.frame_contacts[k - 1] : 0)));
+    pane.readouts.push_back(contacts);
+  }
   pane.meshes.push_back(std::move(mesh));
   for (const SphereCollider& s : scene.spheres) pane.spheres.push_back({"collider", s.center, s.radius});
   if (scene.ground) pane.ground = PageGround{scene.ground->height, 4 * std::max(grid.width, grid.height)};

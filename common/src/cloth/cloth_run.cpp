@@ -46,7 +46,7 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
   Schedule samples{options.samples, steps}, frames{options.frames, steps};
   rec.samples.push_back({0, cloth.kinetic(), cloth.potential(), cloth.max_strain()});
   rec.peak_strain = rec.samples.back().strain;
-  if (options.frames > 0) rec.frames.push_back(cloth.x);
+  if (options.frames > 0) rec.frames.push_back(cloth.x), rec.frame_contacts.push_back(0);
   const ProgressWeight weight(options.implicit ? 1 : stages(options.integrator));  // an RK4 step: 4 passes
   ProgressCounter progress;
   std::unique_ptr<ImplicitStepper> implicit;
@@ -81,7 +81,10 @@ ClothRecording run_cloth(const ClothScene& scene, const Springs& springs, ClothK
     }
     rec.deepest = std::max(rec.deepest, deepest_penetration(run_scene, cloth.x));
     if (sample_due) rec.samples.push_back({cloth.t, cloth.kinetic(), cloth.potential(), strain});
-    if (frame_due) rec.frames.push_back(cloth.x);
+    if (frame_due) {
+      rec.frames.push_back(cloth.x);
+      rec.frame_contacts.push_back(cloth.work.contacts + (implicit ? implicit->work.filtered_nodes : 0));
+    }
   }
   rec.work = cloth.work;
   if (implicit) rec.implicit = implicit->work;

@@ -37,6 +37,9 @@ struct ClothSample {
 struct ClothRecording {
   std::vector<ClothSample> samples;
   std::vector<NodeArray> frames;  ///< positions at the frame times, while the cloth holds
+  /// At each frame, the contacts so far: nodes pushed out of a collider after a step, and (the
+  /// implicit steps) node-steps held on one inside the solve.
+  std::vector<long> frame_contacts;
   long steps = 0;
   double exploded_at = -1;  ///< [s]: when the cloth blew up or a solve failed (< 0: never)
   std::string failure;      ///< why an implicit step could not go on (empty: it could)
