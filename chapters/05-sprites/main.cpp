@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 
 #include <kit/app/chapter_app.hpp>
-#include <kit/app/page_output.hpp>
 #include <kit/base/measure.hpp>
 #include <kit/render/animation.hpp>
+#include <kit/render/page_output.hpp>
 #include <kit/sprites/sprite_estimate.hpp>
 
 #include "emission_check.hpp"

@@ -1,8 +1,8 @@
 #pragma once
 // Chapter 7's scene run as a 3D page (web_page.hpp): the implicit method beside symplectic Euler
 // at the same large step, on one clock, each with what it cost, so that the trade is watched.
-#include <kit/app/page_output.hpp>
 #include <kit/cloth/cloth_run.hpp>
+#include <kit/render/page_output.hpp>
 
 namespace kit {
 

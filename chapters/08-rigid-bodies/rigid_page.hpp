@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <kit/app/page_output.hpp>
+#include <kit/render/page_output.hpp>
 #include <kit/rigid/rigid_body.hpp>
 #include <kit/rigid/rigid_stepper.hpp>
 

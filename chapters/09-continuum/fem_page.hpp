@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <string>
 
-#include <kit/app/page_output.hpp>
 #include <kit/fem/fem_body.hpp>
+#include <kit/render/page_output.hpp>
 
 #include "continuum_flags.hpp"
 

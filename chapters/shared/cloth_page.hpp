@@ -4,9 +4,9 @@
 // stretch the run measured.
 #include <string>
 
-#include <kit/app/page_output.hpp>
 #include <kit/cloth/cloth_run.hpp>
 #include <kit/cloth/cloth_scene.hpp>
+#include <kit/render/page_output.hpp>
 #include <kit/render/web_page.hpp>
 
 namespace kit {

@@ -1,5 +1,5 @@
 // A chapter's 3D pages as its other outputs (page_output.hpp).
-#include <kit/app/page_output.hpp>
+#include <kit/render/page_output.hpp>
 
 #include <nlohmann/json.hpp>
 
