@@ -33,14 +33,16 @@ inline void say_sprite_counts(Report& report, const SpriteRecording& rec, const 
   const SpriteTotals& t = rec.totals;
   report.say("counts",
              "3. {frames} frames of '{scene}' with {integrator}: emitted {emitted}, "
-             "dead {dead}, alive {alive} = emitted - dead; at most {peak} alive, {dropped} not emitted "
+             "dead {dead}, alive {alive} (the particles stored after the last frame; emitted - dead = "
+             "{balance}); at most {peak} alive, {dropped} not emitted "
              "(--max-particles {max}).\n",
              {{"frames", long(rec.frames.size())},
               {"scene", scene},
               {"integrator", std::string(display_name(run.integrator))},
               {"emitted", t.emitted},
               {"dead", t.dead},
-              {"alive", t.alive()},
+              {"alive", rec.frames.empty() ? 0L : rec.frames.back().alive},  // counted, not derived
+              {"balance", t.alive()},
               {"peak", rec.peak_alive},
               {"dropped", t.dropped},
               {"max", run.max_particles}});
