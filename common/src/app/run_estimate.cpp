@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include <fmt/format.h>
 
@@ -60,6 +62,16 @@ void announce_run(Report& report, std::string_view section, std::string_view wha
   ProgressTask::set_total(e.work > 0 ? e.work : e.steps);
 }
 
-double machine_memory() { return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE)); }
+double machine_memory() {
+  const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+  const char* text = std::getenv("KIT_MEMORY_LIMIT");
+  if (!text || !*text) return physical;
+  char* end = nullptr;
+  const double limit = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(limit) || !(limit >= 1e6))
+    throw UsageError(
+        fmt::format("KIT_MEMORY_LIMIT '{}': expected a number of bytes in [1e6, inf), such as 8e9", text));
+  return std::min(physical, limit);  // it lowers the bound, never raises it
+}
 
 }  // namespace kit

@@ -37,7 +37,9 @@ struct RunLimits {
   double max_bytes = 4e9;         ///< or beyond 4 GB [B]
 };
 
-/// Physical memory of this machine [B] (sysconf), the bound on what a run may ask for.
+/// Physical memory of this machine [B] (sysconf), the bound on what a run may ask for, or less:
+/// KIT_MEMORY_LIMIT (bytes, at least 1e6) lowers it, for a shared machine, and lets the tests
+/// check a refusal on any machine. A malformed value is a UsageError naming the variable.
 double machine_memory();
 
 /// "40 MB", "2.1 GB", "under 1 MB": an amount of memory for a person to read.
