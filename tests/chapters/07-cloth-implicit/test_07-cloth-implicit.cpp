@@ -6,6 +6,7 @@
 // backward Euler, CG counts are reported and bounded, the multigrid preconditioner is symmetric
 // positive definite and cuts CG's iterations by an order of magnitude or more (its own count
 // grows only at extreme stiffness), the chapter prints what was measured, and bad input exits 2.
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -26,6 +27,7 @@
 #include "cloth_implicit_wiring.hpp"
 #include "cloth_kernels.hpp"
 #include "implicit_kernel_checks.hpp"
+#include "printed_as.hpp"
 #include "process.hpp"
 
 using nlohmann::json;
@@ -189,16 +191,26 @@ TEST_CASE("implicit cloth: K = 1e6 N/m at h = 1/30 s stays bounded and ends with
     REQUIRE(rec.exploded_at < 0);
     CHECK(rec.peak_strain < 0.01);
     CHECK(rec.samples.back().total() < rec.samples.front().total());
-    // Solved exactly, Newton's backward Euler loses energy at every step; the linearised step
-    // may gain a little at one (the lecture's "perte de la stabilité inconditionnelle"), by
-    // under 0.1% of the energy, while it falls over the run.
+    // Solved exactly, Newton's backward Euler loses energy at every step. The linearised step
+    // gains at one (the lecture's "perte de la stabilité inconditionnelle"), while it falls over
+    // the run. Against the motion, the scale that matters (E's origin is arbitrary), the gain is
+    // not small: 1.55 mJ, 58% of the swing's largest kinetic energy (2.69 mJ; Newton's sheet,
+    // less damped, reaches 22.9 mJ). 0.1% of |E(0)| = 2.9 mJ, the bound this test had, hid it.
     run.implicit_settings.cg_tolerance = 1e-10;
     const kit::ClothRecording exact = kit::run_cloth(scene, springs, kit::student_cloth_kernels(), run);
     REQUIRE(exact.samples.size() == 31);
-    const double allowed =
-        method == kit::ImplicitMethod::newton ? 1e-9 : 1e-3 * std::abs(exact.samples[0].total());
-    for (std::size_t k = 1; k < exact.samples.size(); ++k)
-      CHECK(exact.samples[k].total() <= exact.samples[k - 1].total() + allowed);
+    double motion = 0, rise = 0;  // [J]
+    for (std::size_t k = 0; k < exact.samples.size(); ++k) {
+      motion = std::max(motion, exact.samples[k].kinetic);
+      if (k > 0) rise = std::max(rise, exact.samples[k].total() - exact.samples[k - 1].total());
+    }
+    INFO("largest kinetic energy " << motion << " J, largest rise in a step " << rise << " J");
+    if (method == kit::ImplicitMethod::newton) {
+      CHECK(rise <= 1e-9 * motion);
+    } else {
+      CHECK(rise > 0.5 * motion);
+      CHECK(rise < 0.6 * motion);
+    }
     CHECK(exact.samples.back().total() < exact.samples.front().total());
   }
   // Symplectic Euler at the same step explodes at once.
@@ -322,6 +334,7 @@ TEST_CASE("implicit cloth: CG iterations are counted, reported and bounded by th
   const kit::ClothScene scene = sheet(1e4);
   const kit::Springs springs = kit::build_springs(scene.grid, scene.springs);
   const long unknowns = 3 * scene.grid.nodes();
+  std::map<kit::ImplicitSolver, kit::ImplicitWork> work;
   for (const auto solver : kit::all_implicit_solvers) {
     const kit::ClothRecording rec =
         kit::run_cloth(scene, springs, kit::student_cloth_kernels(),
@@ -332,12 +345,21 @@ TEST_CASE("implicit cloth: CG iterations are counted, reported and bounded by th
     CHECK(w.assemblies == 30);
     CHECK(w.blocks == 30 * long(springs.size()));
     CHECK(w.unconverged_solves == 0);
-    CHECK(w.max_cg_iterations > 0);
     CHECK(w.max_cg_iterations <= unknowns);
-    CHECK(w.cg_iterations >= 30 * 1);  // every solve took at least one product with A
     CHECK(w.worst_residual <= 1e-3);
     CHECK(w.multigrid_setups == (solver == kit::ImplicitSolver::mg ? 30 : 0));  // one per solve
+    work[solver] = w;
   }
+  // The same systems (no contact, pins eliminated or filtered): the filtered PCG takes exactly
+  // one iteration more per solve than Eigen's CG (it counts its first product with A), and the
+  // multigrid a fraction of them. Measured: CG 1493 in all, at most 69 a solve; the multigrid 97
+  // and 4.
+  using S = kit::ImplicitSolver;
+  CHECK(work[S::pcg].cg_iterations == work[S::cg].cg_iterations + 30);
+  CHECK(work[S::pcg].max_cg_iterations == work[S::cg].max_cg_iterations + 1);
+  CHECK(work[S::cg].cg_iterations > 30 * 20);  // diagonal CG needs tens a solve at K = 1e4
+  CHECK(work[S::mg].cg_iterations * 5 < work[S::cg].cg_iterations);
+  CHECK(work[S::mg].max_cg_iterations <= 10);
 }
 
 TEST_CASE("implicit cloth: on the drape at h = 1/30 s, filters hold the sheet on the sphere; CG with "
@@ -494,20 +516,29 @@ TEST_CASE("multigrid: a matrix without the cloth's block pattern is refused", "[
   CHECK_THROWS_AS(multigrid.setup(scalar), std::invalid_argument);
 }
 
-TEST_CASE("chapter 7: the printed numbers are the ones measured", "[whole-run]") {
+TEST_CASE("chapter 7: the printed numbers are the ones measured, at the README's precision", "[whole-run]") {
+  using kit::test::printed;
   kit::test::TempDir out("ch07");
   const json j = run_chapter({"--no-plot"}, out.path());
-  CHECK(j["jacobian"]["fd"].get<double>() < 1e-6);
+  // Sections 1 and 2.
+  CHECK(j["jacobian"]["fd"].get<double>() == printed("4.5e-10"));
   CHECK(j["jacobian"]["clamped"].get<double>() >= -1e-12);
-  CHECK(j["jacobian"]["unclamped"].get<double>() < -0.1);
+  CHECK(j["jacobian"]["unclamped"].get<double>() == printed("-0.99"));
   CHECK(j["system"]["matrix"].get<double>() < 1e-13);
   CHECK(j["system"]["definite"] == "positive definite");
   CHECK(j["system"]["negative_curvature"].get<bool>());
-  // Symplectic Euler's limit falls like K^(−1/2): ×1/√10 per decade, within 5%.
+  CHECK(j["system"]["iterations"] == 4);
+  CHECK(j["linearisation"]["difference"].get<double>() * 100 == printed("65"));  // [%] vs Newton
+  // Section 3. Symplectic Euler's limit agrees with 2/ω_max to the bisection's 0.2% (it reads
+  // 1.0019 of it), and falls like K^(−1/2): ×1/√10 per decade.
   const json& rows = j["stiffness"];
+  CHECK(rows.front()["dt_max"].get<double>() == printed("1.6e-2"));
+  CHECK(rows.back()["dt_max"].get<double>() == printed("1.6e-5"));
+  CHECK(rows.back()["steps_per_frame"].get<double>() == printed("2.1e3"));
   double previous = 0;
   for (const json& row : rows) {
-    CHECK(row["dt_max"].get<double>() == Approx(row["predicted"].get<double>()).epsilon(0.1));
+    INFO(row.dump());
+    CHECK(row["dt_max"].get<double>() / row["predicted"].get<double>() == Approx(1.0025).margin(0.0025));
     if (previous > 0 && row["dt_max"].get<double>() != previous)
       CHECK(row["dt_max"].get<double>() / previous == Approx(1 / std::sqrt(10.0)).epsilon(0.05));
     previous = row["dt_max"].get<double>();
@@ -520,13 +551,22 @@ TEST_CASE("chapter 7: the printed numbers are the ones measured", "[whole-run]")
     // Newton's ten iterations at 1e7 let it rise 3 times, by 0.41 J at most.
     if (method.rfind("implicit-euler", 0) == 0) {
       CHECK((k < 1e5 ? peak == 0 : peak > 0.1));
-      if (k == 1e5) CHECK(peak == Approx(0.43).margin(0.005));
-      if (k == 1e7) CHECK(peak == Approx(133).margin(0.5));
+      if (k == 1e5) CHECK(peak == printed("0.43"));
+      if (k == 1e7) CHECK(peak == printed("133"));
     }
     if (method.rfind("newton", 0) == 0 && k <= 1e6) CHECK(row["rising_steps"] == 0);
     if (method.rfind("newton", 0) == 0 && k == 1e7) {
       CHECK(row["rising_steps"] == 3);
-      CHECK(row["largest_rise"].get<double>() == Approx(0.41).margin(0.005));
+      CHECK(row["largest_rise"].get<double>() == printed("0.41"));
+    }
+    // Liu at 10 iterations: stable to 1e4 (rising 1.2 J above E(0) there), then gaining 6, 70
+    // and 700 J.
+    if (method.rfind("liu", 0) == 0) {
+      CHECK(row["stable"].get<bool>() == (k <= 1e4));
+      if (k == 1e4) CHECK(row["peak_gain"].get<double>() == printed("1.2"));
+      if (k == 1e5) CHECK(row["energy_change"].get<double>() == printed("6"));
+      if (k == 1e6) CHECK(row["energy_change"].get<double>() == printed("7e1"));
+      if (k == 1e7) CHECK(row["energy_change"].get<double>() == printed("7e2"));
     }
   }
   // The trade: each method's error falls as its step does; implicit Euler is first order.
@@ -548,10 +588,66 @@ TEST_CASE("chapter 7: the printed numbers are the ones measured", "[whole-run]")
       CHECK(row["energy_lost"].get<double>() > 0);
       CHECK(row["energy_lost"].get<double>() < 2 * motion);
     }
-  for (const json& row : j["solver"]) CHECK(row["unconverged"] == 0);
+  // Section 4's figures: the energy implicit Euler removes at 1/30 s and 1/960 s, Newton's at
+  // 1/30 s, and the explicit methods' errors at their stable steps (their first rows).
+  const auto trade = [&](const std::string& method, double dt) {
+    for (const json& row : j["trade"])
+      if (row["method"] == method && std::abs(row["dt"].get<double>() - dt) < 1e-9 * dt) return row;
+    FAIL("no trade row for " << method << " at " << dt << " s");
+    return json();
+  };
+  CHECK(trade("implicit-euler", 1.0 / 30)["energy_lost"].get<double>() == printed("1.8"));
+  CHECK(trade("implicit-euler", 1.0 / 960)["energy_lost"].get<double>() == printed("0.19"));
+  CHECK(trade("newton", 1.0 / 30)["energy_lost"].get<double>() == printed("1.0"));
+  std::map<std::string, double> first_error;
+  for (const json& row : j["trade"]) first_error.emplace(row["method"], row["error"].get<double>());
+  CHECK(first_error["symplectic-euler"] == printed("1.5e-3"));
+  CHECK(first_error["rk4"] == printed("2e-6"));
+  // Section 5: CG's mean iterations a solve from the smallest h to the largest, per K; the
+  // filtered PCG exactly one more in every row; the multigrid's range.
+  std::map<std::pair<std::string, double>, std::vector<json>> solver;
+  for (const json& row : j["solver"]) {
+    CHECK(row["unconverged"] == 0);
+    solver[{row["solver"].get<std::string>(), row["stiffness"].get<double>()}].push_back(row);
+  }
+  const auto range = [&](const std::string& name, double k) {
+    double lo = 1e300, hi = 0;
+    for (const json& row : solver[{name, k}])
+      lo = std::min(lo, row["mean_iterations"].get<double>()),
+      hi = std::max(hi, row["mean_iterations"].get<double>());
+    return std::pair{lo, hi};
+  };
+  const std::map<double, std::array<const char*, 4>> ranges = {{1e2, {"3", "31", "1.6", "3.4"}},
+                                                               {1e4, {"31", "71", "3.2", "4.1"}},
+                                                               {1e6, {"117", "156", "4.5", "5.0"}}};
+  for (const auto& [k, text] : ranges) {
+    INFO("K = " << k);
+    CHECK(range("cg", k).first == printed(text[0]));
+    CHECK(range("cg", k).second == printed(text[1]));
+    CHECK(range("mg", k).first == printed(text[2]));
+    CHECK(range("mg", k).second == printed(text[3]));
+    const auto& cg = solver[{"cg", k}];
+    const auto& pcg = solver[{"pcg", k}];
+    REQUIRE(cg.size() == pcg.size());
+    for (std::size_t r = 0; r < cg.size(); ++r) {
+      CHECK(pcg[r]["mean_iterations"].get<double>() == Approx(cg[r]["mean_iterations"].get<double>() + 1));
+      CHECK(pcg[r]["max_iterations"] == cg[r]["max_iterations"].get<long>() + 1);
+    }
+  }
+  // Section 6: the drape with the filtered PCG.
   CHECK(j["run"]["steps"] == 90);
   CHECK(j["run"]["deepest"].get<double>() < 1e-9);
-  CHECK(j["implicit_work"]["filtered"].get<long>() > 0);
+  CHECK(j["run"]["strain"].get<double>() == printed("98"));  // [%]
+  CHECK(j["run"]["energy"].get<double>() == printed("1.74"));
+  CHECK(j["implicit_work"]["mean"].get<double>() == printed("43"));
+  CHECK(j["implicit_work"]["most"] == 127);
+  CHECK(j["implicit_work"]["filtered"].get<double>() == Approx(4500).epsilon(0.05));
+  // The same drape with the multigrid: 19.6 iterations a step, at most 25; it ends 1.75 J above
+  // E(0). (--quick: the fixed experiments smaller, the scene's run the same.)
+  const json mg = run_chapter({"--no-plot", "--quick", "--solver", "mg"}, out.path());
+  CHECK(mg["implicit_work"]["mean"].get<double>() == printed("19.6"));
+  CHECK(mg["implicit_work"]["most"] == 25);
+  CHECK(mg["run"]["energy"].get<double>() == printed("1.75"));
 }
 
 TEST_CASE("chapter 7: an explicit method at the implicit step is reported as diverging, not a crash") {
