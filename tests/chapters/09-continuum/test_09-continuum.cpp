@@ -2,6 +2,7 @@
 // against the small strain under rigid turns, the spinning plate against its closed forms, the
 // springs' mesh dependence, the solvers' counts, the OBJ meshes, divergence and bad input; and in
 // process, the sheet's forces and stiffness against each other and a membrane hanging in 3-D.
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -18,6 +19,7 @@
 #include "chapter_run.hpp"
 #include "continuum_experiments.hpp"
 #include "fem_kernels.hpp"
+#include "printed_as.hpp"
 #include "process.hpp"
 
 using nlohmann::json;
@@ -70,6 +72,80 @@ TEST_CASE("chapter 9: the cantilever converges to the 2-D answer at order 2, wit
   for (std::size_t k = 3; k < meshes.size(); ++k) {
     CHECK(double(meshes[k]["springs"]) < -0.14);
     CHECK(double(meshes[k]["springs"]) > -0.16);
+  }
+}
+
+TEST_CASE("chapter 9: the README's tables, at the digits they print (round-off as a bound)", "[whole-run]") {
+  using kit::test::printed;
+  const json& s = default_run();
+  // Section 1.
+  CHECK(double(s["material"]["lambda"]) == printed("3.297e8"));
+  CHECK(double(s["material"]["mu"]) == printed("3.846e8"));
+  CHECK(double(s["material"]["tip"]) == printed("1.4715"));
+  CHECK(double(s["material"]["omega"]) == printed("101.5"));
+  // Section 2: ghost forces 17 and 130 times a 1% stretch's at 30° and 90°; the spinning plate.
+  for (const json& row : s["turns"]["rows"]) {
+    if (double(row["degrees"]) == 30) CHECK(double(row["linear_force"]) == printed("17"));
+    if (double(row["degrees"]) == 90) CHECK(double(row["linear_force"]) == printed("1.3e2"));
+  }
+  const json& plate = s["plate"];
+  CHECK(double(plate["stvk"]["h"]) == printed("3.5e-5"));
+  CHECK(double(plate["linear"]["angle"]) == printed("1.2626"));
+  CHECK(double(plate["linear"]["strain"]) == printed("6.98"));
+  CHECK(std::abs(double(plate["linear"]["energy_change"])) < 1e-12);  // README: 1e-15, round-off
+  CHECK(double(plate["stvk"]["angle"]) == printed("3.1416"));
+  CHECK(double(plate["stvk"]["strain"]) == printed("5.1e-7"));
+  CHECK(double(plate["stvk"]["energy_change"]) == printed("6.5e-8"));
+  CHECK(double(plate["springs"]["angle"]) == printed("3.1416"));
+  CHECK(double(plate["springs"]["strain"]) == printed("6.0e-7"));
+  CHECK(double(plate["springs"]["energy_change"]) == printed("8.9e-9"));
+  // Section 3: the cantilever's table, Richardson's limit and orders, the springs' shortfall.
+  const std::vector<std::array<const char*, 2>> tips = {{"-0.711", "-0.650"},  {"-0.370", "-0.323"},
+                                                        {"-0.125", "-0.190"},  {"-0.0294", "-0.151"},
+                                                        {"-0.0017", "-0.146"}, {"0.0056", "-0.147"}};
+  const json& meshes = s["cantilever"]["meshes"];
+  REQUIRE(meshes.size() == tips.size());
+  for (std::size_t k = 0; k < tips.size(); ++k) {
+    INFO(meshes[k].dump());
+    CHECK(long(meshes[k]["ny"]) == 1L << k);
+    CHECK(double(meshes[k]["linear"]) == printed(tips[k][0]));
+    CHECK(double(meshes[k]["stvk"]) == printed(tips[k][0]));
+    CHECK(double(meshes[k]["springs"]) == printed(tips[k][1]));
+  }
+  const json& c = s["cantilever"];
+  CHECK(double(c["stvk"]["limit"]) == printed("1.4836"));
+  CHECK(double(c["stvk"]["vs_eb"]) == printed("0.82"));
+  CHECK(double(c["stvk"]["vs_timoshenko"]) == printed("-0.22"));
+  CHECK(double(c["timoshenko"]) == printed("1.4868"));
+  CHECK(double(c["stvk"]["order"]) == printed("1.76"));
+  CHECK(double(c["stvk"]["richardson_order"]) == printed("1.93"));
+  CHECK(double(c["springs"]["finest"]) == printed("-14.7"));
+  CHECK(double(c["springs"]["vs_fem"]) == printed("-15.4"));
+  // Section 4: the mean stretch on regular and irregular meshes, and their difference.
+  const std::map<std::pair<std::string, int>, std::array<const char*, 3>> stretch = {
+      {{"stvk", 4}, {"0.98227", "0.97989", "2.4e-3"}},   {{"stvk", 8}, {"0.98478", "0.98443", "3.6e-4"}},
+      {{"stvk", 16}, {"0.98577", "0.98564", "1.3e-4"}},  {{"stvk", 32}, {"0.98613", "0.98600", "1.3e-4"}},
+      {{"stvk", 64}, {"0.98626", "0.98620", "5.4e-5"}},  {{"springs", 4}, {"0.83710", "0.94741", "0.13"}},
+      {{"springs", 8}, {"0.83706", "0.91438", "0.092"}}, {{"springs", 16}, {"0.83421", "0.98740", "0.18"}},
+      {{"springs", 32}, {"0.83214", "0.98197", "0.18"}}, {{"springs", 64}, {"0.83092", "0.98266", "0.18"}}};
+  REQUIRE(s["stretch"].size() == stretch.size());
+  for (const json& row : s["stretch"]) {
+    INFO(row.dump());
+    const auto& text = stretch.at({row["model"].get<std::string>(), row["n"].get<int>()});
+    CHECK(double(row["regular"]) == printed(text[0]));
+    CHECK(double(row["irregular"]) == printed(text[1]));
+    CHECK(double(row["difference"]) == printed(text[2]));
+  }
+  // Section 5: the relaxations' counts (iteration counts: exact on one build; 2% allowed for
+  // another compiler's last bits) and the tips they reach.
+  for (const json& row : s["trade"]) {
+    if (row["model"] != "stvk" || row["solver"] == "static Newton") continue;
+    if (row["elements"] != 80 && row["elements"] != 1280) continue;  // the README's two rows
+    INFO(row.dump());
+    const bool small = row["elements"] == 80, implicit = row["solver"] == "implicit relaxation";
+    const double count = implicit ? double(row["iterations"]) : double(row["steps"]);
+    CHECK(count == Approx(small ? (implicit ? 6144 : 6943) : (implicit ? 24916 : 27771)).epsilon(0.02));
+    CHECK(double(row["error"]) == printed(small ? "-0.370" : "-0.029"));
   }
 }
 
@@ -165,9 +241,9 @@ TEST_CASE(
   const json implicit = run_chapter({"--integrator", "implicit", "--dt", "0.01", "--t-end", "1"});
   const json& stvk = implicit["plate"]["stvk"];
   CHECK(long(stvk["steps"]) == 100);
-  CHECK(double(stvk["energy_change"]) < -0.99);  // as the README says: 99.8% of the spin's energy is gone
-  CHECK(double(stvk["angle"]) < 0.3);            // and it turns by 0.24 rad where π was due
-  CHECK(double(stvk["strain"]) < 1e-4);          // but it stays a plate
+  CHECK(double(stvk["energy_change"]) == kit::test::printed("-0.998"));  // 99.8% of the spin's energy gone
+  CHECK(double(stvk["angle"]) == kit::test::printed("0.24"));  // it turns by 0.24 rad where π was due
+  CHECK(double(stvk["strain"]) < 1e-4);                        // but it stays a plate
   // The linear plate's motion is force-free: implicit Euler follows it exactly.
   CHECK(double(implicit["plate"]["linear"]["angle"]) == Approx(std::atan(M_PI)).epsilon(1e-9));
   CHECK_FALSE(bool(implicit["plate"]["linear"]["diverged"]));
@@ -267,7 +343,7 @@ TEST_CASE("chapter 9: a 95 s spin is unwrapped step by step: StVK turns 95π; th
 }
 
 TEST_CASE(
-    "chapter 9 (in process): the explicit step limit is below the true 2/ω_max, within a factor of three") {
+    "chapter 9 (in process): the explicit step limit is below the true 2/ω_max, and at least 0.75 of it") {
   const kit::ContinuumKernels kernels = kit::student_continuum_kernels();
   for (const kit::FemModel model : {kit::FemModel::linear, kit::FemModel::stvk, kit::FemModel::springs})
     for (const kit::MeshKind mesh : {kit::MeshKind::regular, kit::MeshKind::irregular}) {
@@ -287,8 +363,10 @@ TEST_CASE(
       const double omega_max =
           std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(reduced).eigenvalues().maxCoeff());
       const double limit = kit::explicit_step_limit(body);
+      // Gershgorin's row sums bound ω_max² from above, so the limit is safe, and on these meshes
+      // it gives away 6% to 21% of the step (0.787 to 0.938 of 2/ω_max): at most a quarter.
       CHECK(limit <= 2 / omega_max * (1 + 1e-12));
-      CHECK(limit >= 2 / omega_max / 3);
+      CHECK(limit >= 0.75 * 2 / omega_max);
     }
 }
 
