@@ -191,6 +191,29 @@ def check_page(chapter, name, entry, folder, summary, work, png_probe, browser):
     return [f"{chapter}/{page.name}: {p}" for p in problems]
 
 
+# The page sizes the chapter READMEs print, as they print them: (chapter, page) → the README's
+# words. A page's size is checked to the digits printed, browser or not.
+README_SIZES = {("05-sprites", "sprites"): "3.8 MB for the", ("06-cloth-explicit", "cloth"): "1.5 MB for the flag",
+                ("07-cloth-implicit", "cloth"): "(1.4 MB)"}
+
+
+def readme_size_problems(figures):
+    problems = []
+    root = pathlib.Path(__file__).resolve().parents[2]
+    for (chapter, page), words in README_SIZES.items():
+        readme = " ".join((root / "chapters" / chapter / "README.md").read_text().split())
+        if words not in readme:
+            problems.append(f"{chapter}/README.md no longer says {words!r}: update README_SIZES")
+            continue
+        printed = words.strip("(").split()[0]
+        half_unit = 0.5 * 10 ** -(len(printed.split(".")[1]) if "." in printed else 0)
+        summary = json.loads((figures / f"{chapter}.summary.json").read_text())
+        megabytes = summary.get("pages", {}).get(page, {}).get("bytes", 0) / 1e6
+        if abs(megabytes - float(printed)) > half_unit:
+            problems.append(f"{chapter}: {page}.html is {megabytes:.3f} MB; its README says {printed} MB")
+    return problems
+
+
 def main(argv):
     if len(argv) != 4:
         print(__doc__, file=sys.stderr)
@@ -198,12 +221,16 @@ def main(argv):
     figures, work, png_probe = pathlib.Path(argv[1]), pathlib.Path(argv[2]), pathlib.Path(argv[3])
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
+    sizes = readme_size_problems(figures)
     browser = chromium()
+    if browser is None and sizes:
+        print("\n".join("FAILED: " + problem for problem in sizes))
+        return 1
     if browser is None:
         print("SKIPPED: no chromium here (./kit deps --for test installs Debian's package chromium; "
               "Ubuntu has Chromium only as a snap)")
         return SKIPPED
-    jobs, problems = [], []
+    jobs, problems = [], list(sizes)
     for chapter in THREE_D_CHAPTERS:
         summary = json.loads((figures / f"{chapter}.summary.json").read_text())
         pages = summary.get("pages", {})
