@@ -5,6 +5,7 @@
 // stated amount where the README names one (a bisection's width, say).
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 
 #include <kit_catch.hpp>
@@ -23,8 +24,12 @@ inline double half_unit(const std::string& text) {
 
 /// CHECK(x == printed("12.48")): x rounds to 12.48, |x − 12.48| ≤ 0.005 (+ slack). Approx's own
 /// relative epsilon (1.2e-5 by default) is set to round-off, so that it adds nothing.
+/// A text that is not a number whole ("", "12%") is a mistake in the test: it throws.
 inline Catch::Approx printed(const std::string& text, double slack = 0) {
-  return Catch::Approx(std::strtod(text.c_str(), nullptr)).margin(half_unit(text) + slack).epsilon(1e-12);
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0') throw std::invalid_argument("printed(\"" + text + "\"): not a number");
+  return Catch::Approx(value).margin(half_unit(text) + slack).epsilon(1e-12);
 }
 
 }  // namespace kit::test

@@ -120,14 +120,15 @@ TEST_CASE("chapter 8: the README's numbers, at the digits it prints (round-off a
                        {"euler-q", "19", "0.4858", "-0.71", "0.36", "", ""},
                        {"exp-map", "19", "0.4858", "-0.71", "0.36", "", ""},
                        {"midpoint", "6", "1.6760", "-1.8e-6", "", "", ""},
-                       {"rk4", "6", "1.6760", "-1.4e-10", "1.1e-11", "5.5e-12", ""}};
+                       {"rk4", "6", "1.6760", "", "-", "-", ""}};  // "-": to a factor of 3, below
   for (const Row& row : table) {
     INFO(row.name);
     const json& r = s["integrators"][row.name];
     CHECK(long(r["flips"]) == std::stol(row.flips));
     CHECK(double(r["flip_interval"]) == printed(row.interval));
-    CHECK(double(r["interval_error"]) == printed(row.versus));
+    if (*row.versus) CHECK(double(r["interval_error"]) == printed(row.versus));
     const auto stated = [](const json& value, const char* text) {
+      if (std::string(text) == "-") return;
       if (*text)
         CHECK(double(value) == printed(text));
       else
@@ -167,7 +168,7 @@ TEST_CASE("chapter 8: the README's numbers, at the digits it prints (round-off a
     INFO(steps << " steps");
     for (const char* first : {"euler-R-polar", "euler-q", "exp-map"})
       if (*text[0]) CHECK(error[first][steps] == printed(text[0]));
-    CHECK(error["midpoint"][steps] == printed(text[1]));
+    if (steps < 1'000'000) CHECK(error["midpoint"][steps] == printed(text[1]));
     if (*text[2]) CHECK(error["rk4"][steps] == printed(text[2]));
   }
   for (const char* first : {"euler-R-polar", "euler-q", "exp-map"}) {
@@ -177,6 +178,13 @@ TEST_CASE("chapter 8: the README's numbers, at the digits it prints (round-off a
   const auto near = [](double value, double printed_value) {  // the same order of magnitude
     return value > printed_value / 3 && value < printed_value * 3;
   };
+  // RK4's row of section 2 at h = 1 ms is mostly round-off too (at 0.1 ms it is larger), and the
+  // midpoint's 1.2e-9 at 10⁶ steps holds 2e-11 of it: orders of magnitude, like the floor.
+  const json& rk4 = s["integrators"]["rk4"];
+  CHECK(near(-double(rk4["interval_error"]), 1.4e-10));
+  CHECK(near(double(rk4["energy_drift"]), 1.1e-11));
+  CHECK(near(double(rk4["body_momentum_drift"]), 5.5e-12));
+  CHECK(near(error["midpoint"][1'000'000], 1.2e-9));
   CHECK(near(error["rk4"][3000], 7e-11));
   CHECK(near(error["rk4"][10'000], 1.8e-10));
   CHECK(near(error["rk4"][100'000], 1.8e-9));
