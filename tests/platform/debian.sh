@@ -15,6 +15,8 @@
 #           be compared with another release's (the same points under Catch2 v2 and v3)
 #   refused ./kit run on a release the kit cannot serve (bullseye, say): it must exit 2 with a
 #           message that names what is missing and why, never a CMake or compiler error
+#   root    nothing more: the fresh root alone, for a later call with KIT_PLATFORM_REUSE=yes (CI
+#           makes it while the host's build keeps the cores busy, downloading beside compiling)
 # Default: run, bench and test. Needs root (debootstrap, mounts); the root's own / is the kit's machine,
 # entered by pivot_root in a private mount namespace (not chroot, in which bubblewrap, the
 # grader's sandbox, could not create its namespaces). Everything it mounts goes with that namespace.
@@ -25,7 +27,7 @@
 # Example: tests/platform/debian.sh trixie && tests/platform/debian.sh bookworm &&
 #          tests/platform/compare_figures.py /var/tmp/kit-platform/{bookworm,trixie}.figures
 set -euo pipefail
-usage() { echo "usage: $0 RELEASE [run|bench|test|quick|sanitizers|grades|refused]...   (RELEASE: bookworm, trixie, ...)" >&2; exit 2; }
+usage() { echo "usage: $0 RELEASE [run|bench|test|quick|sanitizers|grades|refused|root]...   (RELEASE: bookworm, trixie, ...)" >&2; exit 2; }
 (($# >= 1)) || usage
 release=$1
 shift
@@ -33,7 +35,7 @@ shift
 stages=("$@")
 ((${#stages[@]})) || stages=(run bench test)
 for stage in "${stages[@]}"; do
-  case "$stage" in run | bench | test | quick | sanitizers | grades | refused) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test quick sanitizers grades refused" >&2; exit 2 ;; esac
+  case "$stage" in run | bench | test | quick | sanitizers | grades | refused | root) ;; *) echo "debian.sh: unknown stage '$stage'; stages: run bench test quick sanitizers grades refused root" >&2; exit 2 ;; esac
 done
 [ "$(id -u)" -eq 0 ] || { echo "debian.sh: needs root (debootstrap and mounts)" >&2; exit 2; }
 
@@ -93,6 +95,7 @@ fi
 inside '. /etc/os-release; echo "$PRETTY_NAME"'
 for stage in "${stages[@]}"; do
   case "$stage" in
+    root) ;;
     run)
       timed "./kit run" inside './kit run >/root/kit-run.log 2>&1 || { tail -40 /root/kit-run.log; exit 1; }; tail -3 /root/kit-run.log'
       # A student who only runs chapters installs no test framework.

@@ -187,7 +187,7 @@ TEST_CASE("cloth: symplectic Euler's measured Δt_max is 2/ω_max to the bisecti
   }
 }
 
-TEST_CASE("cloth: Δt_max falls like 1/N within 1% across N = 16, 32, 64", "[cloth]") {
+TEST_CASE("cloth: Δt_max falls like 1/N within 1% across N = 16, 32, 64", "[cloth][lecture-sizes]") {
   const auto kernels = kit::student_cloth_kernels();
   kit::ClothScene scene = square_sheet(16, true, true);
   scene.pins = {{0, -1}, {-1, -1}};

@@ -240,7 +240,7 @@ std::vector<double> energy_gains(kit::ImplicitMethod method, double stiffness, d
 
 TEST_CASE("implicit cloth: the linearised step's energy rises for a few steps on a stiff sheet, Newton's "
           "falls at every one",
-          "[implicit]") {
+          "[implicit][lecture-sizes]") {
   // K = 1e6 N/m, h = 1/30 s, from rest: the Jacobian taken at the start of each step is far from
   // the one at its end, and the linearised step overshoots. At the chapter's CG tolerance (1e-3)
   // these are the values the README states, to its 4 digits (3 at 1 s).
