@@ -36,6 +36,7 @@ DropRun run_drop(const RigidKernels& kernels, RotationIntegrator integrator, con
   run.samples.push_back(sample(state, 0));
   if (frames > 0) run.frames.push_back(state);
   bool rising = false;  // after a bounce, until the next contact: the apex is the highest centre
+  const double flat = resting_height(shape, Mat3::Identity());  // [m]
   ProgressCounter progress;
   for (long k = 1; k <= steps; ++k) {
     progress.add(1);
@@ -47,6 +48,7 @@ DropRun run_drop(const RigidKernels& kernels, RotationIntegrator integrator, con
       break;
     }
     const double before = sample(state, t).total();
+    run.largest_turn = std::max(run.largest_turn, (state.R - start.R).norm());
     run.deepest = std::min(run.deepest, lowest_point(shape, state));
     const ContactEvent event = resolve_ground_contact(shape, state, contact);
     const DropSample now = sample(state, t);
@@ -64,6 +66,7 @@ DropRun run_drop(const RigidKernels& kernels, RotationIntegrator integrator, con
     } else if (rising) {
       run.apexes.back() = std::max(run.apexes.back(), now.centre_height);
     }
+    if (std::abs(state.x.y() - flat) > flat_tolerance) run.settled_at = t;
     if (k % sample_every == 0 || event.bounced) run.samples.push_back(now);
     if (frames > 0 && k == frame_step(long(run.frames.size()), steps, frames)) run.frames.push_back(state);
   }

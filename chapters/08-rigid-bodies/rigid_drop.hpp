@@ -39,7 +39,11 @@ struct DropRun {
   int most_sweeps = 0;              ///< Gauss–Seidel sweeps of the hardest contact
   int unconverged_contacts = 0;     ///< contacts that used all max_contact_sweeps
   double largest_impulse_gain = 0;  ///< the largest kinetic energy the impulses added [J] (≤ 0: none)
-  double diverged_at = -1;          ///< [s]; −1 if never
+  double largest_turn = 0;          ///< max ‖R − R(0)‖ (Frobenius) over the run: how far it turned
+  /// The end of the last step at which the centre was more than flat_tolerance from its height
+  /// lying flat [s]: flat and still from then on (t_end: not settled).
+  double settled_at = 0;
+  double diverged_at = -1;  ///< [s]; −1 if never
   RigidState end;
 };
 
@@ -52,5 +56,9 @@ DropRun run_drop(const RigidKernels& kernels, RotationIntegrator integrator, con
 
 /// The height of the centre when the body rests on the ground in the orientation R [m].
 double resting_height(const RigidShape& shape, const Mat3& R);
+
+/// How close to its flat resting height the centre must stay for the body to count as lying
+/// flat [m]: rocking on an edge lifts the centre of the chapter's box by centimetres.
+inline constexpr double flat_tolerance = 1e-4;
 
 }  // namespace kit

@@ -122,13 +122,15 @@ void print_drop(Report& report, const std::string& section, const std::string& w
                 const GroundContact& contact, double drop_height, double resting) {
   const double first_rise = run.apexes.empty() ? 0.0 : (run.apexes.front() - resting) / drop_height;
   const DropSample& end = run.samples.back();
+  const std::string flat = run.settled_at < end.t ? fmt::format("lies flat from {:.2f} s on", run.settled_at)
+                                                  : std::string("is not lying flat at the end");
   report.say(section,
              "{what}: {bounces} bounces in {contacts} steps of contact; the first rises {rise:.4f} of the "
              "fall (e² = {e2:.4f}); deepest corner {deepest:.2e} m inside the ground within a step; friction "
              "{friction:.3g} N·s; the impulses added at most {impulse_gain:.1e} J of motion, a contact with "
              "its lift "
              "{gain:.1e} J; {sweeps} Gauss–Seidel sweeps at most ({unconverged} contacts stopped at the "
-             "cap); at the "
+             "cap); it turned ‖R − R(0)‖ = {turn:.2e} at most (2√2: half a turn), and {flat}; at the "
              "end, {kinetic:.2e} J of motion left, the centre at {height:.4f} m ({resting:.4f} m at rest).\n",
              {{"what", what},
               {"bounces", long(run.bounces)},
@@ -141,6 +143,9 @@ void print_drop(Report& report, const std::string& section, const std::string& w
               {"gain", run.largest_gain},
               {"sweeps", long(run.most_sweeps)},
               {"unconverged", long(run.unconverged_contacts)},
+              {"turn", run.largest_turn},
+              {"settled_at", run.settled_at},
+              {"flat", flat},
               {"kinetic", end.kinetic},
               {"height", end.centre_height},
               {"resting", resting}});

@@ -199,6 +199,9 @@ TEST_CASE("chapter 8: the README's numbers, at the digits it prints (round-off a
   CHECK(long(tilted["sweeps"]) == 200);
   CHECK(std::max(double(flat["deepest"]), double(tilted["deepest"])) * 1e3 == printed("2.4"));  // [mm]
   CHECK(double(tilted["gain"]) == printed("1.6e-4"));
+  CHECK(double(flat["turn"]) < 1e-12);                     // does not turn: round-off
+  CHECK(double(tilted["turn"]) == printed("2.83"));        // tips over, half a turn
+  CHECK(double(tilted["settled_at"]) == printed("1.55"));  // [s], flat from then on
 }
 
 TEST_CASE(
