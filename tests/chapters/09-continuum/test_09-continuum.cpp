@@ -277,6 +277,7 @@ TEST_CASE("chapter 9: --frames writes one OBJ mesh a frame, the first at rest, e
 TEST_CASE("chapter 9 (in process): each model's stiffness is the derivative of its forces; a membrane hangs "
           "in 3-D") {
   const kit::ContinuumKernels kernels = kit::student_continuum_kernels();
+  double least = 1, most = 0;  // the fraction of 2/ω_max given away, over the six meshes
   for (const kit::FemModel model : {kit::FemModel::linear, kit::FemModel::stvk, kit::FemModel::springs}) {
     INFO(kit::model_name(model));
     kit::FemBody body(kit::continuum_mesh(0.3, 0.2, 3, 2, kit::MeshKind::irregular), {}, model, kernels);
@@ -345,6 +346,7 @@ TEST_CASE("chapter 9: a 95 s spin is unwrapped step by step: StVK turns 95π; th
 TEST_CASE(
     "chapter 9 (in process): the explicit step limit is below the true 2/ω_max, and at least 0.75 of it") {
   const kit::ContinuumKernels kernels = kit::student_continuum_kernels();
+  double least = 1, most = 0;  // the fraction of 2/ω_max given away, over the six meshes
   for (const kit::FemModel model : {kit::FemModel::linear, kit::FemModel::stvk, kit::FemModel::springs})
     for (const kit::MeshKind mesh : {kit::MeshKind::regular, kit::MeshKind::irregular}) {
       INFO(kit::model_name(model) << ", " << kit::mesh_name(mesh));
@@ -367,7 +369,11 @@ TEST_CASE(
       // it gives away 6% to 21% of the step (0.787 to 0.938 of 2/ω_max): at most a quarter.
       CHECK(limit <= 2 / omega_max * (1 + 1e-12));
       CHECK(limit >= 0.75 * 2 / omega_max);
+      least = std::min(least, 1 - limit * omega_max / 2);
+      most = std::max(most, 1 - limit * omega_max / 2);
     }
+  CHECK(100 * least == kit::test::printed("6"));  // the README: "gives away 6% to 21%"
+  CHECK(100 * most == kit::test::printed("21"));
 }
 
 TEST_CASE("chapter 9 answers bad input with exit 2, a message naming the flag, and no file") {
