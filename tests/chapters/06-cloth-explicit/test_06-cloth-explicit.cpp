@@ -320,6 +320,11 @@ TEST_CASE("chapter 6: the README's numbers, each at the precision it is printed"
     highest = std::max(highest, law[k]["cells_dt"].get<double>());
   }
   CHECK(100 * (highest / lowest - 1) == printed("0.8"));  // [%]
+  CHECK(law[1]["per_second"].get<double>() / law[0]["per_second"].get<double>() == printed("8.9"));
+  CHECK(law[2]["per_second"].get<double>() / law[1]["per_second"].get<double>() == printed("8.1"));
+  // Section 4's step, 5e-4 s, against the limit of the flag's 32 nodes across.
+  REQUIRE(law[1]["n"].get<int>() == 32);
+  CHECK(5e-4 / law[1]["dt_max"].get<double>() == printed("0.44"));
   // Section 4: the three stable integrators lose 0.055 J and agree to 0.3 mJ; explicit Euler
   // gains energy (how much is chaotic: only the sign is claimed).
   double least = 1e9, most = -1e9;
@@ -373,7 +378,9 @@ TEST_CASE("chapter 6: the README's numbers, each at the precision it is printed"
   CHECK((corner.back() - corner.front()) / 3 == printed("6.5"));
 }
 
-TEST_CASE("chapter 6: frames, OBJ meshes that parse, and an animation player") {
+// [quick-run]: the sanitizer tree leaves it to figures.06-cloth-explicit, which runs the same
+// --quick with frames and meshes (64 s under the sanitizers).
+TEST_CASE("chapter 6: frames, OBJ meshes that parse, and an animation player", "[quick-run]") {
   kit::test::TempDir out("ch06-frames");
   // --quick: the scene's run is the full one; the fixed experiments beside it still draw their figures.
   const json j = run_chapter({"--quick", "--scene", "drape", "--resolution", "12", "--t-end", "0.4",
