@@ -277,7 +277,6 @@ TEST_CASE("chapter 9: --frames writes one OBJ mesh a frame, the first at rest, e
 TEST_CASE("chapter 9 (in process): each model's stiffness is the derivative of its forces; a membrane hangs "
           "in 3-D") {
   const kit::ContinuumKernels kernels = kit::student_continuum_kernels();
-  double least = 1, most = 0;  // the fraction of 2/ω_max given away, over the six meshes
   for (const kit::FemModel model : {kit::FemModel::linear, kit::FemModel::stvk, kit::FemModel::springs}) {
     INFO(kit::model_name(model));
     kit::FemBody body(kit::continuum_mesh(0.3, 0.2, 3, 2, kit::MeshKind::irregular), {}, model, kernels);
